@@ -1,0 +1,305 @@
+//! The multi-level sorted-grid cell list.
+//!
+//! Particles are binned by search radius into levels of one octave each (level ℓ holds
+//! radii in (r_max/2^(ℓ+1), r_max/2^ℓ]; the last level takes everything smaller). Each
+//! level is a uniform grid with cell size equal to its largest radius, particles sorted
+//! by cell so that a row of cells along x is one contiguous slice. A particle of radius
+//! r_i visits, in each level of cell size c, the rows within max(r_i, c): every j of
+//! that level has r_j ≤ c, so every pair with |r_ij| < max(r_i, r_j) is found.
+//!
+//! A level whose bounding box would need more than a few cells per particle (points far
+//! outside the bulk) switches from a dense `cell_start` table to a sorted list of cell
+//! keys searched by bisection, so memory stays O(N) for any point cloud.
+
+use super::criterion::check_inputs;
+use super::{NeighborList, NeighborSearch, PairCriterion};
+use crate::error::CoreError;
+use crate::vector::Vector;
+use rayon::prelude::*;
+use std::ops::Range;
+
+/// Default number of grid levels (radius ratios up to 2^(levels−1) are separated).
+pub const DEFAULT_MAX_LEVELS: usize = 5;
+/// Particles per parallel work item; results do not depend on it.
+const CHUNK: usize = 256;
+/// Cell coordinates beyond this (in cells) are refused: the domain is absurdly large
+/// for the smallest support radius.
+const MAX_CELL_COORD: f64 = 1.0e15;
+
+/// Statistics of one grid level of the last build.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LevelStats {
+    /// Cell size (the largest search radius in the level), m.
+    pub cell_size: f64,
+    /// Particles in the level.
+    pub particles: usize,
+    /// Cells in the level's bounding box.
+    pub cells: f64,
+    /// Whether the level uses the dense cell table (else sorted keys).
+    pub dense: bool,
+}
+
+/// The sorted-grid cell-list neighbour search (see the module docs).
+#[derive(Clone, Debug)]
+pub struct CellList {
+    max_levels: usize,
+    stats: Vec<LevelStats>,
+}
+
+impl Default for CellList {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl CellList {
+    /// A cell list with [`DEFAULT_MAX_LEVELS`] levels.
+    pub fn new() -> Self {
+        Self {
+            max_levels: DEFAULT_MAX_LEVELS,
+            stats: Vec::new(),
+        }
+    }
+    /// A cell list with at most `levels` grid levels (at least 1; 1 gives the classic
+    /// single grid with cells of the largest radius).
+    pub fn with_max_levels(levels: usize) -> Self {
+        Self {
+            max_levels: levels.max(1),
+            stats: Vec::new(),
+        }
+    }
+    /// Statistics of the levels of the last build.
+    pub fn level_stats(&self) -> &[LevelStats] {
+        &self.stats
+    }
+}
+
+impl<V: Vector> NeighborSearch<V> for CellList {
+    fn neighbors<C: PairCriterion<V>>(
+        &mut self,
+        positions: &[V],
+        criterion: &C,
+    ) -> Result<NeighborList, CoreError> {
+        check_inputs(positions, criterion)?;
+        let n = positions.len();
+        if n == 0 {
+            self.stats.clear();
+            return Ok(NeighborList::from_rows(Vec::new()));
+        }
+        let radius: Vec<f64> = (0..n).map(|i| criterion.radius(i)).collect();
+        for (index, &r) in radius.iter().enumerate() {
+            if !(r > 0.0 && r.is_finite()) {
+                return Err(CoreError::BadSupportRadius { index, radius: r });
+            }
+        }
+        let r_max = radius.iter().cloned().fold(0.0, f64::max);
+
+        // Bin particles into levels by octave of radius.
+        let mut members: Vec<Vec<u32>> = vec![Vec::new(); self.max_levels];
+        for (i, &r) in radius.iter().enumerate() {
+            let l = ((r_max / r).log2().floor().max(0.0) as usize).min(self.max_levels - 1);
+            members[l].push(i as u32);
+        }
+        let levels: Vec<Level<V>> = members
+            .into_iter()
+            .filter(|m| !m.is_empty())
+            .map(|m| Level::build(m, positions, &radius))
+            .collect::<Result<_, _>>()?;
+        self.stats = levels.iter().map(Level::stats).collect();
+
+        let parts: Vec<(Vec<usize>, Vec<u32>)> = (0..n.div_ceil(CHUNK))
+            .into_par_iter()
+            .map(|c| {
+                let range = c * CHUNK..((c + 1) * CHUNK).min(n);
+                let mut counts = Vec::with_capacity(range.len());
+                let mut indices = Vec::new();
+                let mut row = Vec::new();
+                for i in range {
+                    row.clear();
+                    for level in &levels {
+                        level.query(i, positions[i], radius[i], criterion, &mut row);
+                    }
+                    row.sort_unstable();
+                    counts.push(row.len());
+                    indices.extend_from_slice(&row);
+                }
+                (counts, indices)
+            })
+            .collect();
+
+        let total: usize = parts.iter().map(|p| p.1.len()).sum();
+        let mut offsets = Vec::with_capacity(n + 1);
+        let mut indices = Vec::with_capacity(total);
+        offsets.push(0);
+        for (counts, idx) in parts {
+            for c in counts {
+                let last = *offsets.last().expect("offsets start with 0");
+                offsets.push(last + c);
+            }
+            indices.extend_from_slice(&idx);
+        }
+        Ok(NeighborList::from_raw(offsets, indices))
+    }
+}
+
+/// How a level finds the particles of a row of cells.
+enum Lookup {
+    /// `cell_start[c]..cell_start[c + 1]` are the slots of linear cell c.
+    Dense(Vec<u32>),
+    /// Per slot, the cell key (z, y, x), sorted; rows found by bisection.
+    Sparse(Vec<[i64; 3]>),
+}
+
+/// One grid level: its particles sorted by cell, with copies of their positions.
+struct Level<V> {
+    cell: f64,
+    inv_cell: f64,
+    origin: V,
+    dims: [i64; 3],
+    index: Vec<u32>,
+    pos: Vec<V>,
+    lookup: Lookup,
+}
+
+impl<V: Vector> Level<V> {
+    fn build(members: Vec<u32>, positions: &[V], radius: &[f64]) -> Result<Self, CoreError> {
+        let cell = members
+            .iter()
+            .map(|&i| radius[i as usize])
+            .fold(0.0, f64::max);
+        let inv_cell = 1.0 / cell;
+        let mut lo = V::splat(f64::INFINITY);
+        let mut hi = V::splat(f64::NEG_INFINITY);
+        for &i in &members {
+            lo = lo.component_min(positions[i as usize]);
+            hi = hi.component_max(positions[i as usize]);
+        }
+        let mut dims = [1i64; 3];
+        let mut ncells = 1.0f64;
+        for k in 0..V::DIM {
+            let extent = (hi.component(k) - lo.component(k)) * inv_cell;
+            if !(extent <= MAX_CELL_COORD) {
+                return Err(CoreError::DomainTooLarge {
+                    extent: hi.component(k) - lo.component(k),
+                    cell,
+                });
+            }
+            dims[k] = extent.floor() as i64 + 1;
+            ncells *= dims[k] as f64;
+        }
+        let coords = |p: V| -> [i64; 3] {
+            let mut c = [0i64; 3];
+            for k in 0..V::DIM {
+                c[k] = (((p.component(k) - lo.component(k)) * inv_cell).floor() as i64)
+                    .clamp(0, dims[k] - 1);
+            }
+            c
+        };
+        let dense = ncells <= (4 * members.len() + 64) as f64;
+        let (index, lookup) = if dense {
+            let nc = ncells as usize;
+            let lin: Vec<usize> = members
+                .iter()
+                .map(|&i| {
+                    let c = coords(positions[i as usize]);
+                    ((c[2] * dims[1] + c[1]) * dims[0] + c[0]) as usize
+                })
+                .collect();
+            // Counting sort by cell; stable, so slots within a cell ascend by index.
+            let mut start = vec![0u32; nc + 1];
+            for &l in &lin {
+                start[l + 1] += 1;
+            }
+            for c in 0..nc {
+                start[c + 1] += start[c];
+            }
+            let mut fill = start.clone();
+            let mut index = vec![0u32; members.len()];
+            for (&i, &l) in members.iter().zip(&lin) {
+                index[fill[l] as usize] = i;
+                fill[l] += 1;
+            }
+            (index, Lookup::Dense(start))
+        } else {
+            let mut keyed: Vec<([i64; 3], u32)> = members
+                .iter()
+                .map(|&i| {
+                    let c = coords(positions[i as usize]);
+                    ([c[2], c[1], c[0]], i)
+                })
+                .collect();
+            keyed.sort_unstable();
+            let index = keyed.iter().map(|k| k.1).collect();
+            (index, Lookup::Sparse(keyed.into_iter().map(|k| k.0).collect()))
+        };
+        let pos = index.iter().map(|&i| positions[i as usize]).collect();
+        Ok(Self {
+            cell,
+            inv_cell,
+            origin: lo,
+            dims,
+            index,
+            pos,
+            lookup,
+        })
+    }
+
+    fn stats(&self) -> LevelStats {
+        LevelStats {
+            cell_size: self.cell,
+            particles: self.index.len(),
+            cells: self.dims.iter().map(|&d| d as f64).product(),
+            dense: matches!(self.lookup, Lookup::Dense(_)),
+        }
+    }
+
+    /// Slots of the cells (x0..=x1, y, z).
+    #[inline]
+    fn row(&self, z: i64, y: i64, x0: i64, x1: i64) -> Range<usize> {
+        match &self.lookup {
+            Lookup::Dense(start) => {
+                let base = (z * self.dims[1] + y) * self.dims[0];
+                start[(base + x0) as usize] as usize..start[(base + x1 + 1) as usize] as usize
+            }
+            Lookup::Sparse(keys) => {
+                let a = keys.partition_point(|k| *k < [z, y, x0]);
+                let b = a + keys[a..].partition_point(|k| *k <= [z, y, x1]);
+                a..b
+            }
+        }
+    }
+
+    /// Appends to `out` the neighbours of particle i found in this level.
+    #[inline]
+    fn query<C: PairCriterion<V>>(&self, i: usize, xi: V, ri: f64, crit: &C, out: &mut Vec<u32>) {
+        let r = ri.max(self.cell);
+        let mut lo = [0i64; 3];
+        let mut hi = [0i64; 3];
+        for k in 0..V::DIM {
+            let x = xi.component(k) - self.origin.component(k);
+            // A margin of 1e-6 cell guards the floor against round-off at cell faces.
+            let a = (((x - r) * self.inv_cell - 1e-6).floor()).max(0.0);
+            let b = (((x + r) * self.inv_cell + 1e-6).floor()).min((self.dims[k] - 1) as f64);
+            if a > b {
+                return;
+            }
+            lo[k] = a as i64;
+            hi[k] = b as i64;
+        }
+        let r2 = r * r;
+        for z in lo[2]..=hi[2] {
+            for y in lo[1]..=hi[1] {
+                for s in self.row(z, y, lo[0], hi[0]) {
+                    let j = self.index[s];
+                    if j as usize == i {
+                        continue;
+                    }
+                    let d = xi - self.pos[s];
+                    if d.norm_squared() < r2 && crit.accepts(i, j as usize, d) {
+                        out.push(j);
+                    }
+                }
+            }
+        }
+    }
+}

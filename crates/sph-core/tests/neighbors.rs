@@ -1,0 +1,177 @@
+//! The cell list against the O(N²) reference on random clouds.
+
+use proptest::prelude::*;
+use sph_core::glam::{DMat2, DMat3, DVec2, DVec3};
+use sph_core::{
+    CellList, NeighborSearch, ScalarSupport, TensorSupport, Vector, brute_force_neighbors,
+};
+
+/// A cloud: a bulk in the unit box, a few coincident copies, a few far outliers.
+fn cloud<V: Vector>(raw: &[(f64, f64, f64)], dup: usize, far: usize) -> Vec<V> {
+    let mut x: Vec<V> = raw
+        .iter()
+        .map(|&(a, b, c)| V::from_fn(|k| [a, b, c][k]))
+        .collect();
+    for k in 0..dup.min(x.len()) {
+        x.push(x[k]);
+    }
+    for k in 0..far {
+        x.push(V::from_fn(|d| 1.0e4 * (1.0 + k as f64) * if d == 0 { 1.0 } else { -0.5 }));
+    }
+    x
+}
+
+fn radii(n: usize, seed: &[f64]) -> Vec<f64> {
+    (0..n).map(|i| seed[i % seed.len()]).collect()
+}
+
+fn same_as_brute<V: Vector>(x: &[V], h: &[f64], levels: usize) -> Result<(), TestCaseError> {
+    let crit = ScalarSupport::new(h).unwrap();
+    let fast = CellList::with_max_levels(levels).neighbors(x, &crit).unwrap();
+    let slow = brute_force_neighbors(x, &crit).unwrap();
+    prop_assert_eq!(fast, slow);
+    Ok(())
+}
+
+fn pt() -> impl Strategy<Value = (f64, f64, f64)> {
+    (0.0f64..1.0, 0.0f64..1.0, 0.0f64..1.0)
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(64))]
+
+    #[test]
+    fn scalar_1d(raw in prop::collection::vec(pt(), 1..300), hs in prop::collection::vec(0.002f64..0.2, 1..8),
+                 dup in 0usize..5, far in 0usize..3, levels in 1usize..6) {
+        let x = cloud::<f64>(&raw, dup, far);
+        same_as_brute(&x, &radii(x.len(), &hs), levels)?;
+    }
+
+    #[test]
+    fn scalar_2d(raw in prop::collection::vec(pt(), 1..300), hs in prop::collection::vec(0.01f64..0.3, 1..8),
+                 dup in 0usize..5, far in 0usize..3, levels in 1usize..6) {
+        let x = cloud::<DVec2>(&raw, dup, far);
+        same_as_brute(&x, &radii(x.len(), &hs), levels)?;
+    }
+
+    #[test]
+    fn scalar_3d(raw in prop::collection::vec(pt(), 1..300), hs in prop::collection::vec(0.02f64..0.5, 1..8),
+                 dup in 0usize..5, far in 0usize..3, levels in 1usize..6) {
+        let x = cloud::<DVec3>(&raw, dup, far);
+        same_as_brute(&x, &radii(x.len(), &hs), levels)?;
+    }
+
+    #[test]
+    fn widely_varying_radii_3d(raw in prop::collection::vec(pt(), 2..300), exps in prop::collection::vec(-7.0f64..0.0, 1..10)) {
+        // Radii spanning 2^7: more octaves than levels, so the last level mixes sizes.
+        let hs: Vec<f64> = exps.iter().map(|e| 0.4 * 2f64.powf(*e)).collect();
+        let x = cloud::<DVec3>(&raw, 2, 1);
+        same_as_brute(&x, &radii(x.len(), &hs), 3)?;
+    }
+
+    #[test]
+    fn asph_2d(raw in prop::collection::vec(pt(), 1..200), a in 3.0f64..30.0, b in 3.0f64..30.0, angle in 0.0f64..3.2, dup in 0usize..4, far in 0usize..2) {
+        let x = cloud::<DVec2>(&raw, dup, far);
+        let rot = DMat2::from_angle(angle);
+        let h: Vec<DMat2> = (0..x.len()).map(|i| {
+            let s = 1.0 + (i % 3) as f64;
+            rot * DMat2::from_diagonal(DVec2::new(a * s, b)) * rot.transpose()
+        }).collect();
+        let crit = TensorSupport::new(&h).unwrap();
+        prop_assert_eq!(CellList::new().neighbors(&x, &crit).unwrap(), brute_force_neighbors(&x, &crit).unwrap());
+    }
+
+    #[test]
+    fn asph_3d(raw in prop::collection::vec(pt(), 1..200), a in 2.0f64..20.0, b in 2.0f64..20.0, c in 2.0f64..20.0, angle in 0.0f64..3.2, far in 0usize..2) {
+        let x = cloud::<DVec3>(&raw, 3, far);
+        let rot = DMat3::from_axis_angle(DVec3::new(1.0, 2.0, -1.0).normalize(), angle);
+        let h: Vec<DMat3> = (0..x.len()).map(|i| {
+            let s = 1.0 + (i % 4) as f64;
+            rot * DMat3::from_diagonal(DVec3::new(a, b * s, c)) * rot.transpose()
+        }).collect();
+        let crit = TensorSupport::new(&h).unwrap();
+        prop_assert_eq!(CellList::new().neighbors(&x, &crit).unwrap(), brute_force_neighbors(&x, &crit).unwrap());
+    }
+}
+
+#[test]
+fn lists_are_symmetric_sorted_and_exclude_self() {
+    let x: Vec<DVec3> = (0..2000)
+        .map(|i| {
+            let f = i as f64;
+            DVec3::new((f * 0.618).fract(), (f * 0.414).fract(), (f * 0.732).fract())
+        })
+        .collect();
+    let h: Vec<f64> = (0..x.len()).map(|i| 0.05 + 0.1 * ((i % 7) as f64 / 7.0)).collect();
+    let list = CellList::new()
+        .neighbors(&x, &ScalarSupport::new(&h).unwrap())
+        .unwrap();
+    for i in 0..x.len() {
+        let row = list.neighbors(i);
+        assert!(row.windows(2).all(|w| w[0] < w[1]), "row {i} not strictly ascending");
+        assert!(!row.contains(&(i as u32)));
+        for &j in row {
+            assert!(list.neighbors(j as usize).binary_search(&(i as u32)).is_ok(), "{i}->{j} not mutual");
+        }
+    }
+}
+
+#[test]
+fn identical_for_one_and_two_threads() {
+    let x: Vec<DVec3> = (0..20_000)
+        .map(|i| {
+            let f = i as f64;
+            DVec3::new((f * 0.618_034).fract(), (f * 0.414_214).fract(), (f * 0.732_051).fract())
+        })
+        .collect();
+    let h: Vec<f64> = (0..x.len()).map(|i| 0.04 + 0.04 * ((i % 5) as f64 / 5.0)).collect();
+    let run = |threads| {
+        rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .unwrap()
+            .install(|| CellList::new().neighbors(&x, &ScalarSupport::new(&h).unwrap()).unwrap())
+    };
+    assert_eq!(run(1), run(2));
+}
+
+#[test]
+fn bad_inputs_are_typed_errors() {
+    use sph_core::CoreError;
+    assert!(matches!(
+        ScalarSupport::new(&[1.0, 0.0]),
+        Err(CoreError::BadSupportRadius { index: 1, .. })
+    ));
+    assert!(matches!(
+        ScalarSupport::new(&[f64::NAN]),
+        Err(CoreError::BadSupportRadius { index: 0, .. })
+    ));
+    let h = [1.0, 1.0];
+    let crit = ScalarSupport::new(&h).unwrap();
+    let e = CellList::new()
+        .neighbors(&[DVec2::ZERO, DVec2::new(f64::NAN, 0.0)], &crit)
+        .unwrap_err();
+    assert!(matches!(e, CoreError::NonFinitePosition { index: 1, .. }), "{e}");
+    let e = CellList::new().neighbors(&[DVec2::ZERO], &crit).unwrap_err();
+    assert!(matches!(e, CoreError::LengthMismatch { .. }), "{e}");
+    // Not positive definite.
+    let bad = [DMat2::from_diagonal(DVec2::new(1.0, -1.0))];
+    assert!(matches!(
+        TensorSupport::new(&bad),
+        Err(CoreError::BadSupportTensor { index: 0, .. })
+    ));
+    // Extent of 1e20 cells.
+    let x = [DVec2::ZERO, DVec2::new(1.0e10, 0.0)];
+    let tiny = [1e-10, 1e-10];
+    let e = CellList::new()
+        .neighbors(&x, &ScalarSupport::new(&tiny).unwrap())
+        .unwrap_err();
+    assert!(matches!(e, CoreError::DomainTooLarge { .. }), "{e}");
+}
+
+#[test]
+fn empty_input_gives_empty_list() {
+    let x: Vec<DVec3> = Vec::new();
+    let list = CellList::new().neighbors(&x, &ScalarSupport::new(&[]).unwrap()).unwrap();
+    assert!(list.is_empty());
+}
