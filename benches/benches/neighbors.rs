@@ -34,7 +34,9 @@ fn rstar_tree(x: &[DVec3]) -> usize {
             let mut row: Vec<u32> = tree
                 .locate_within_distance([p.x, p.y, p.z], SUPPORT * SUPPORT)
                 .map(|g| g.data)
-                .filter(|&j| j as usize != i && (x[j as usize] - *p).length_squared() < SUPPORT * SUPPORT)
+                .filter(|&j| {
+                    j as usize != i && (x[j as usize] - *p).length_squared() < SUPPORT * SUPPORT
+                })
                 .collect();
             row.sort_unstable();
             row
@@ -52,9 +54,15 @@ fn bench(c: &mut Criterion) {
         let n = x.len();
         let pairs = cell_list(&x, &h);
         assert_eq!(pairs, rstar_tree(&x), "the two searches disagree");
-        println!("N = {n}: mean neighbour count {:.1}", pairs as f64 / n as f64);
+        println!(
+            "N = {n}: mean neighbour count {:.1}",
+            pairs as f64 / n as f64
+        );
         group.throughput(Throughput::Elements(n as u64));
-        let one = rayon::ThreadPoolBuilder::new().num_threads(1).build().unwrap();
+        let one = rayon::ThreadPoolBuilder::new()
+            .num_threads(1)
+            .build()
+            .unwrap();
         group.bench_with_input(BenchmarkId::new("cell_list_2threads", n), &x, |b, x| {
             b.iter(|| black_box(cell_list(x, &h)))
         });

@@ -83,7 +83,11 @@ pub fn sym_eigen3(m: [[f64; 3]; 3]) -> SymEigen<glam::DMat3> {
     order.sort_by(|&i, &j| a[i][i].total_cmp(&a[j][j]));
     let col = |k: usize| glam::DVec3::new(v[0][k], v[1][k], v[2][k]);
     SymEigen {
-        values: [a[order[0]][order[0]], a[order[1]][order[1]], a[order[2]][order[2]]],
+        values: [
+            a[order[0]][order[0]],
+            a[order[1]][order[1]],
+            a[order[2]][order[2]],
+        ],
         vectors: glam::DMat3::from_cols(col(order[0]), col(order[1]), col(order[2])),
     }
 }

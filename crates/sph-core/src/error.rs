@@ -24,7 +24,9 @@ pub enum CoreError {
         radius: f64,
     },
     /// An ASPH tensor is not symmetric positive definite.
-    #[error("particle {index}: ASPH tensor H is not symmetric positive definite (eigenvalues {eigenvalues:?})")]
+    #[error(
+        "particle {index}: ASPH tensor H is not symmetric positive definite (eigenvalues {eigenvalues:?})"
+    )]
     BadSupportTensor {
         /// Particle index.
         index: usize,
@@ -62,7 +64,9 @@ pub enum CoreError {
         reason: &'static str,
     },
     /// A permutation is not a bijection of 0..n.
-    #[error("permutation of length {len} is not a bijection (index {index} repeated or out of range)")]
+    #[error(
+        "permutation of length {len} is not a bijection (index {index} repeated or out of range)"
+    )]
     BadPermutation {
         /// Length of the permutation.
         len: usize,

@@ -210,7 +210,8 @@ mod tests {
     #[test]
     fn reorder_moves_every_field_together() {
         let mut p = sample();
-        p.reorder(&Permutation::new(vec![2, 0, 1]).unwrap()).unwrap();
+        p.reorder(&Permutation::new(vec![2, 0, 1]).unwrap())
+            .unwrap();
         assert_eq!(p.id, vec![2, 0, 1]);
         assert_eq!(p.mass, vec![3.0, 1.0, 2.0]);
         assert_eq!(p.material, vec![2, 0, 1]);
@@ -224,9 +225,22 @@ mod tests {
         assert!(p.validate().is_ok());
         p.density[1] = -1.0;
         let e = p.validate().unwrap_err();
-        assert!(matches!(e, CoreError::BadField { index: 1, field: "density", .. }), "{e}");
+        assert!(
+            matches!(
+                e,
+                CoreError::BadField {
+                    index: 1,
+                    field: "density",
+                    ..
+                }
+            ),
+            "{e}"
+        );
         p.density[1] = 1.0;
         p.mass.pop();
-        assert!(matches!(p.validate(), Err(CoreError::LengthMismatch { what: "mass", .. })));
+        assert!(matches!(
+            p.validate(),
+            Err(CoreError::LengthMismatch { what: "mass", .. })
+        ));
     }
 }

@@ -53,7 +53,11 @@ impl Permutation {
         Permutation { order: inv }
     }
     /// Reorders `values` in place; errors if its length differs.
-    pub fn apply<T: Clone>(&self, what: &'static str, values: &mut Vec<T>) -> Result<(), CoreError> {
+    pub fn apply<T: Clone>(
+        &self,
+        what: &'static str,
+        values: &mut Vec<T>,
+    ) -> Result<(), CoreError> {
         if values.len() != self.order.len() {
             return Err(CoreError::LengthMismatch {
                 what,

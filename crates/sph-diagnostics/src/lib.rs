@@ -1,8 +1,24 @@
 //! # sph-diagnostics
 //!
-//! What a run is judged by.
+//! What a run is judged by: exact solutions for verification problems, error norms,
+//! conservation sums, and (to come) impact diagnostics (ejecta, β, crater) and writers.
 //!
-//! **Status:** scaffold. This crate will own: exact solutions for verification (Riemann
-//! problem, Noh, Sedov–Taylor) and error norms; conservation sums; impact diagnostics
-//! (ejecta, momentum transfer β, crater diameter, depth and profile); writers (VTK
-//! .vtu/.pvd, CSV, JSON) and plots.
+//! ```
+//! use sph_diagnostics::exact::{GasState, RiemannSolution};
+//! // Sod's shock tube (Toro ch. 4, test 1).
+//! let sod = RiemannSolution::solve(
+//!     GasState { density: 1.0, velocity: 0.0, pressure: 1.0 },
+//!     GasState { density: 0.125, velocity: 0.0, pressure: 0.1 },
+//!     1.4,
+//! ).unwrap();
+//! assert!((sod.p_star - 0.30313).abs() < 1e-5);
+//! assert!((sod.u_star - 0.92745).abs() < 1e-5);
+//! ```
+//!
+//! ## Feature flags
+//! None.
+
+pub mod error;
+pub mod exact;
+
+pub use error::ExactError;

@@ -2,8 +2,8 @@
 
 use approx::assert_relative_eq;
 use proptest::prelude::*;
-use sph_core::glam::{DMat2, DMat3, DVec2, DVec3};
 use sph_core::Vector;
+use sph_core::glam::{DMat2, DMat3, DVec2, DVec3};
 use sph_kernel::{CubicSpline, Kernel, KernelChoice, WendlandC2, WendlandC4, WendlandC6};
 use std::f64::consts::PI;
 
@@ -75,7 +75,10 @@ fn cartesian_normalisation_is_one_to_1e6() {
         let e1 = cartesian::<f64>(&k, 0.7, 20_000, None) - 1.0;
         let e2 = cartesian::<DVec2>(&k, 0.7, 1_000, None) - 1.0;
         let e3 = cartesian::<DVec3>(&k, 0.7, 160, None) - 1.0;
-        println!("{:>13}: ∫W dV − 1 = {e1:+.2e} (1-D), {e2:+.2e} (2-D), {e3:+.2e} (3-D)", k.name());
+        println!(
+            "{:>13}: ∫W dV − 1 = {e1:+.2e} (1-D), {e2:+.2e} (2-D), {e3:+.2e} (3-D)",
+            k.name()
+        );
         for (d, e) in [(1, e1), (2, e2), (3, e3)] {
             assert!(e.abs() < 1e-6, "{} {d}-D: {e:e}", k.name());
         }
@@ -91,10 +94,15 @@ fn asph_tensor_kernel_integrates_to_one() {
     let f2 = |r: DVec2| k.w_tensor(r, &h2);
     let i2 = cartesian::<DVec2>(&k, 0.5, 1_000, Some(&f2));
     let rot3 = DMat3::from_axis_angle(DVec3::new(1.0, 2.0, 3.0).normalize(), 0.7);
-    let h3 = rot3 * DMat3::from_diagonal(DVec3::new(1.0 / 0.5, 1.0 / 0.3, 1.0 / 0.2)) * rot3.transpose();
+    let h3 =
+        rot3 * DMat3::from_diagonal(DVec3::new(1.0 / 0.5, 1.0 / 0.3, 1.0 / 0.2)) * rot3.transpose();
     let f3 = |r: DVec3| k.w_tensor(r, &h3);
     let i3 = cartesian::<DVec3>(&k, 0.5, 200, Some(&f3));
-    println!("ASPH Wendland C2: ∫W dV − 1 = {:+.2e} (2-D), {:+.2e} (3-D)", i2 - 1.0, i3 - 1.0);
+    println!(
+        "ASPH Wendland C2: ∫W dV − 1 = {:+.2e} (2-D), {:+.2e} (3-D)",
+        i2 - 1.0,
+        i3 - 1.0
+    );
     assert!((i2 - 1.0).abs() < 1e-6);
     assert!((i3 - 1.0).abs() < 1e-5);
 }
@@ -104,11 +112,19 @@ fn point_values_of_wendland_c2() {
     // Paper §2.4: W = 21/(2π h³) (1−R)⁴(4R+1). At R = 1/2, h = 1: 21/(2π)·(1/16)·3.
     let w = WendlandC2.w_radial(3, 0.5, 1.0);
     assert_relative_eq!(w, 21.0 / (2.0 * PI) * 3.0 / 16.0, max_relative = 1e-15);
-    assert_relative_eq!(WendlandC2.w_radial(2, 0.0, 2.0), 7.0 / (PI * 4.0), max_relative = 1e-15);
+    assert_relative_eq!(
+        WendlandC2.w_radial(2, 0.0, 2.0),
+        7.0 / (PI * 4.0),
+        max_relative = 1e-15
+    );
     assert_eq!(WendlandC2.w_radial(3, 1.0, 1.0), 0.0);
     assert_eq!(WendlandC2.w_radial(3, 1.5, 1.0), 0.0);
     // Cubic spline continuity at the knot q = 1/2: 1 − 6/4 + 6/8 = 2·(1/8).
-    assert_relative_eq!(CubicSpline.f(0.5 - 1e-14), CubicSpline.f(0.5), max_relative = 1e-12);
+    assert_relative_eq!(
+        CubicSpline.f(0.5 - 1e-14),
+        CubicSpline.f(0.5),
+        max_relative = 1e-12
+    );
 }
 
 #[test]
@@ -209,5 +225,9 @@ proptest! {
 #[test]
 fn tensor_determinant_scales_like_h_to_minus_d() {
     let h = 0.37;
-    assert_relative_eq!((DMat3::IDENTITY * (1.0 / h)).determinant(), h.powi(-3), max_relative = 1e-14);
+    assert_relative_eq!(
+        (DMat3::IDENTITY * (1.0 / h)).determinant(),
+        h.powi(-3),
+        max_relative = 1e-14
+    );
 }

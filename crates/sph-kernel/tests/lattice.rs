@@ -62,7 +62,11 @@ fn counts(n_target: f64) -> (usize, f64) {
                     let u = |s: u64| side as f64 * unit(i as u64 * 3 + s);
                     DVec3::new(u(0), u(1), u(2))
                 } else {
-                    DVec3::new((i % side) as f64, ((i / side) % side) as f64, (i / (side * side)) as f64)
+                    DVec3::new(
+                        (i % side) as f64,
+                        ((i / side) % side) as f64,
+                        (i / (side * side)) as f64,
+                    )
                 }
             })
             .collect()
@@ -72,11 +76,16 @@ fn counts(n_target: f64) -> (usize, f64) {
     let mut out = (0, 0.0);
     for (pass, random) in [false, true].into_iter().enumerate() {
         let x = mk(random);
-        let list = CellList::new().neighbors(&x, &ScalarSupport::new(&h).unwrap()).unwrap();
+        let list = CellList::new()
+            .neighbors(&x, &ScalarSupport::new(&h).unwrap())
+            .unwrap();
         let idx: Vec<usize> = (0..x.len()).filter(|&i| interior(x[i])).collect();
         if pass == 0 {
             out.0 = list.count(idx[idx.len() / 2]);
-            assert!(idx.iter().all(|&i| list.count(i) == out.0), "lattice counts differ");
+            assert!(
+                idx.iter().all(|&i| list.count(i) == out.0),
+                "lattice counts differ"
+            );
         } else {
             out.1 = idx.iter().map(|&i| list.count(i) as f64).sum::<f64>() / idx.len() as f64;
         }
@@ -103,16 +112,24 @@ fn lattice_sums_and_neighbour_counts() {
         }
     }
     println!();
-    println!("| n_target | (4/3)π n³ | cubic lattice (exact) | cell list, lattice | cell list, random cloud (mean) |");
+    println!(
+        "| n_target | (4/3)π n³ | cubic lattice (exact) | cell list, lattice | cell list, random cloud (mean) |"
+    );
     println!("|---|---|---|---|---|");
     for n in [2.0, 2.5, 3.0] {
         let continuum = 4.0 / 3.0 * PI * n * n * n;
         let exact = lattice_count_3d(n);
         let (lat, jit) = counts(n);
         println!("| {n} | {continuum:.1} | {exact} | {lat} | {jit:.1} |");
-        assert_eq!(lat, exact, "cell list disagrees with exact lattice count at n={n}");
+        assert_eq!(
+            lat, exact,
+            "cell list disagrees with exact lattice count at n={n}"
+        );
         // In a random cloud of density 1/Δx³ the expected count is exactly (4/3)π n³
         // (the study's 33 / 65 / 113); 3 % is about 10 standard errors of the mean here.
-        assert!((jit - continuum).abs() < 0.03 * continuum, "n={n}: {jit} vs {continuum}");
+        assert!(
+            (jit - continuum).abs() < 0.03 * continuum,
+            "n={n}: {jit} vs {continuum}"
+        );
     }
 }

@@ -230,7 +230,10 @@ impl<V: Vector> Level<V> {
                 .collect();
             keyed.sort_unstable();
             let index = keyed.iter().map(|k| k.1).collect();
-            (index, Lookup::Sparse(keyed.into_iter().map(|k| k.0).collect()))
+            (
+                index,
+                Lookup::Sparse(keyed.into_iter().map(|k| k.0).collect()),
+            )
         };
         let pos = index.iter().map(|&i| positions[i as usize]).collect();
         Ok(Self {

@@ -19,11 +19,21 @@ fn to_na3(m: &DMat3) -> Matrix3<f64> {
 
 fn check_eigen3(m: DMat3) -> Result<(), TestCaseError> {
     let e = m.sym_eigen();
-    let mut na: Vec<f64> = to_na3(&m).symmetric_eigen().eigenvalues.iter().cloned().collect();
+    let mut na: Vec<f64> = to_na3(&m)
+        .symmetric_eigen()
+        .eigenvalues
+        .iter()
+        .cloned()
+        .collect();
     na.sort_by(f64::total_cmp);
     let scale = 1.0 + m.frobenius_norm();
     for k in 0..3 {
-        prop_assert!((e.values[k] - na[k]).abs() <= 1e-12 * scale, "{:?} vs {:?}", e.values, na);
+        prop_assert!(
+            (e.values[k] - na[k]).abs() <= 1e-12 * scale,
+            "{:?} vs {:?}",
+            e.values,
+            na
+        );
         // A v = λ v, |v| = 1.
         let v = e.vectors.col(k);
         prop_assert!(((m * v) - v * e.values[k]).length() <= 1e-12 * scale);
@@ -31,7 +41,12 @@ fn check_eigen3(m: DMat3) -> Result<(), TestCaseError> {
     }
     // Orthonormal columns.
     let vtv = e.vectors.transpose() * e.vectors;
-    prop_assert!((vtv - DMat3::IDENTITY).to_cols_array().iter().all(|x| x.abs() < 1e-12));
+    prop_assert!(
+        (vtv - DMat3::IDENTITY)
+            .to_cols_array()
+            .iter()
+            .all(|x| x.abs() < 1e-12)
+    );
     Ok(())
 }
 

@@ -16,7 +16,9 @@ fn cloud<V: Vector>(raw: &[(f64, f64, f64)], dup: usize, far: usize) -> Vec<V> {
         x.push(x[k]);
     }
     for k in 0..far {
-        x.push(V::from_fn(|d| 1.0e4 * (1.0 + k as f64) * if d == 0 { 1.0 } else { -0.5 }));
+        x.push(V::from_fn(|d| {
+            1.0e4 * (1.0 + k as f64) * if d == 0 { 1.0 } else { -0.5 }
+        }));
     }
     x
 }
@@ -27,7 +29,9 @@ fn radii(n: usize, seed: &[f64]) -> Vec<f64> {
 
 fn same_as_brute<V: Vector>(x: &[V], h: &[f64], levels: usize) -> Result<(), TestCaseError> {
     let crit = ScalarSupport::new(h).unwrap();
-    let fast = CellList::with_max_levels(levels).neighbors(x, &crit).unwrap();
+    let fast = CellList::with_max_levels(levels)
+        .neighbors(x, &crit)
+        .unwrap();
     let slow = brute_force_neighbors(x, &crit).unwrap();
     prop_assert_eq!(fast, slow);
     Ok(())
@@ -99,19 +103,33 @@ fn lists_are_symmetric_sorted_and_exclude_self() {
     let x: Vec<DVec3> = (0..2000)
         .map(|i| {
             let f = i as f64;
-            DVec3::new((f * 0.618).fract(), (f * 0.414).fract(), (f * 0.732).fract())
+            DVec3::new(
+                (f * 0.618).fract(),
+                (f * 0.414).fract(),
+                (f * 0.732).fract(),
+            )
         })
         .collect();
-    let h: Vec<f64> = (0..x.len()).map(|i| 0.05 + 0.1 * ((i % 7) as f64 / 7.0)).collect();
+    let h: Vec<f64> = (0..x.len())
+        .map(|i| 0.05 + 0.1 * ((i % 7) as f64 / 7.0))
+        .collect();
     let list = CellList::new()
         .neighbors(&x, &ScalarSupport::new(&h).unwrap())
         .unwrap();
     for i in 0..x.len() {
         let row = list.neighbors(i);
-        assert!(row.windows(2).all(|w| w[0] < w[1]), "row {i} not strictly ascending");
+        assert!(
+            row.windows(2).all(|w| w[0] < w[1]),
+            "row {i} not strictly ascending"
+        );
         assert!(!row.contains(&(i as u32)));
         for &j in row {
-            assert!(list.neighbors(j as usize).binary_search(&(i as u32)).is_ok(), "{i}->{j} not mutual");
+            assert!(
+                list.neighbors(j as usize)
+                    .binary_search(&(i as u32))
+                    .is_ok(),
+                "{i}->{j} not mutual"
+            );
         }
     }
 }
@@ -121,16 +139,26 @@ fn identical_for_one_and_two_threads() {
     let x: Vec<DVec3> = (0..20_000)
         .map(|i| {
             let f = i as f64;
-            DVec3::new((f * 0.618_034).fract(), (f * 0.414_214).fract(), (f * 0.732_051).fract())
+            DVec3::new(
+                (f * 0.618_034).fract(),
+                (f * 0.414_214).fract(),
+                (f * 0.732_051).fract(),
+            )
         })
         .collect();
-    let h: Vec<f64> = (0..x.len()).map(|i| 0.04 + 0.04 * ((i % 5) as f64 / 5.0)).collect();
+    let h: Vec<f64> = (0..x.len())
+        .map(|i| 0.04 + 0.04 * ((i % 5) as f64 / 5.0))
+        .collect();
     let run = |threads| {
         rayon::ThreadPoolBuilder::new()
             .num_threads(threads)
             .build()
             .unwrap()
-            .install(|| CellList::new().neighbors(&x, &ScalarSupport::new(&h).unwrap()).unwrap())
+            .install(|| {
+                CellList::new()
+                    .neighbors(&x, &ScalarSupport::new(&h).unwrap())
+                    .unwrap()
+            })
     };
     assert_eq!(run(1), run(2));
 }
@@ -151,8 +179,13 @@ fn bad_inputs_are_typed_errors() {
     let e = CellList::new()
         .neighbors(&[DVec2::ZERO, DVec2::new(f64::NAN, 0.0)], &crit)
         .unwrap_err();
-    assert!(matches!(e, CoreError::NonFinitePosition { index: 1, .. }), "{e}");
-    let e = CellList::new().neighbors(&[DVec2::ZERO], &crit).unwrap_err();
+    assert!(
+        matches!(e, CoreError::NonFinitePosition { index: 1, .. }),
+        "{e}"
+    );
+    let e = CellList::new()
+        .neighbors(&[DVec2::ZERO], &crit)
+        .unwrap_err();
     assert!(matches!(e, CoreError::LengthMismatch { .. }), "{e}");
     // Not positive definite.
     let bad = [DMat2::from_diagonal(DVec2::new(1.0, -1.0))];
@@ -172,6 +205,8 @@ fn bad_inputs_are_typed_errors() {
 #[test]
 fn empty_input_gives_empty_list() {
     let x: Vec<DVec3> = Vec::new();
-    let list = CellList::new().neighbors(&x, &ScalarSupport::new(&[]).unwrap()).unwrap();
+    let list = CellList::new()
+        .neighbors(&x, &ScalarSupport::new(&[]).unwrap())
+        .unwrap();
     assert!(list.is_empty());
 }

@@ -1,0 +1,3 @@
+//! sph-diagnostics: exact solutions against the reference values of verification.md.
+
+mod riemann;
