@@ -165,7 +165,7 @@ fn star_states_converge_to_exact_in_the_weak_wave_limit() {
     // For jumps of relative size δ the acoustic and HLLC star states differ from the exact
     // ones by O(δ²): halving δ must cut the error by ≈ 4 (asserted ≥ 3.5).
     let base = [1.0, 0.2, 1.0];
-    let err = |delta: f64, solver: &dyn Fn(&SideState, &SideState) -> StarState| {
+    let err = |delta: f64, solver: &dyn Fn(&SideState, &SideState) -> StarState| -> f64 {
         let l = [
             base[0] * (1.0 + delta),
             base[1] + 0.5 * delta,
@@ -176,7 +176,8 @@ fn star_states_converge_to_exact_in_the_weak_wave_limit() {
         let s = solver(&gas(l[0], l[1], l[2], 1.4), &gas(r[0], r[1], r[2], 1.4));
         (s.velocity - ex.u_star).abs() + (s.pressure - ex.p_star).abs()
     };
-    let solvers: [(&str, &dyn Fn(&SideState, &SideState) -> StarState); 3] = [
+    type Solver<'a> = &'a dyn Fn(&SideState, &SideState) -> StarState;
+    let solvers: [(&str, Solver); 3] = [
         ("acoustic", &|l, r| acoustic_star(l, r)),
         ("HLLC Davis", &|l, r| {
             hllc_star(l, r, WaveSpeedEstimate::Davis)
