@@ -12,7 +12,8 @@ fn st(a: [f64; 3]) -> GasState {
 }
 
 /// (name, left, right, γ, p*, u*, ρ*_L, ρ*_R) from verification.md §1 (5–6 digits).
-const TABLE: [(&str, [f64; 3], [f64; 3], f64, f64, f64, f64, f64); 8] = [
+type Row = (&'static str, [f64; 3], [f64; 3], f64, f64, f64, f64, f64);
+const TABLE: [Row; 8] = [
     (
         "Sod",
         [1.0, 0.0, 1.0],
