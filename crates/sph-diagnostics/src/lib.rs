@@ -20,5 +20,7 @@
 
 pub mod error;
 pub mod exact;
+pub mod norms;
 
 pub use error::ExactError;
+pub use norms::{ErrorNorms, convergence_order, error_norms, log_log_slope};
