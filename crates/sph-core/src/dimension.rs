@@ -18,9 +18,9 @@ pub trait Dimension: Copy + Clone + Send + Sync + Debug + Default + PartialEq + 
     /// A short name for messages and output ("1d", "2d", "3d").
     const NAME: &'static str;
     /// Positions, velocities, gradients.
-    type Vector: Vector;
+    type Vector: Vector + serde::Serialize + serde::de::DeserializeOwned;
     /// Second-rank tensors (velocity gradient, ASPH H).
-    type Tensor: Tensor<Vector = Self::Vector>;
+    type Tensor: Tensor<Vector = Self::Vector> + serde::Serialize + serde::de::DeserializeOwned;
 
     /// Volume of the unit ball: 2 (1-D), π (2-D), 4π/3 (3-D).
     fn unit_ball_volume() -> f64;

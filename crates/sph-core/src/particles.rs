@@ -13,10 +13,7 @@ use serde::{Deserialize, Serialize};
 /// Particle fields as structure of arrays. All vectors have the same length.
 #[derive(Clone, Debug, Default, Serialize, Deserialize)]
 #[serde(bound = "")]
-pub struct Particles<D: Dimension>
-where
-    D::Vector: Serialize + for<'a> Deserialize<'a>,
-{
+pub struct Particles<D: Dimension> {
     /// Position x (m).
     pub position: Vec<D::Vector>,
     /// Velocity v (m/s).
@@ -54,10 +51,7 @@ pub struct ParticleInit<V> {
     pub material: u16,
 }
 
-impl<D: Dimension> Particles<D>
-where
-    D::Vector: Serialize + for<'a> Deserialize<'a>,
-{
+impl<D: Dimension> Particles<D> {
     /// An empty store.
     pub fn new() -> Self {
         Self {

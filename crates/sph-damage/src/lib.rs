@@ -1,7 +1,74 @@
 //! # sph-damage
 //!
-//! Scalar damage D ∈ [0, 1] and its evolution.
+//! Scalar damage D ∈ [0, 1] of brittle solids (paper §3.3) behind the [`DamageModel`]
+//! trait: the maximum-tensile-stress model ([`MaxTensileStress`]), Benz–Asphaug
+//! Weibull flaws with crack growth ([`BenzAsphaug`], flaws in a [`FlawSet`] seeded
+//! reproducibly with rand_pcg), and [`NoDamage`]. Damage weakens tension and the
+//! deviatoric stress elsewhere (paper §2, sph-strength); this crate only evolves D.
 //!
-//! **Status:** scaffold. This crate will own (issue "Material models"): the
-//! `DamageModel` trait; maximum tensile stress; Benz–Asphaug Weibull flaws seeded
-//! reproducibly with rand_pcg; crack growth at 0.4 × the longitudinal wave speed.
+//! All quantities are f64 in SI units, stress and strain tension-positive.
+//!
+//! The solver integrates s = D^(1/3) (see [`model`] for why, and for the local strain
+//! ε = σ_1/((1 − D)E) that activates flaws), then applies the model's bounds with
+//! [`apply_bounds`], which reports every clamp.
+//!
+//! ```
+//! use sph_damage::{
+//!     apply_bounds, youngs_modulus, BenzAsphaug, BenzAsphaugParams, BoundAction,
+//!     DamageInput, DamageModel, WeibullParams,
+//! };
+//!
+//! // The study's basalt target: Ø123.3 × 123.3 mm cylinder, k = 2.7e41 m⁻³, m = 10.
+//! let weibull = WeibullParams::BASALT_STUDY;
+//! let e = youngs_modulus(26.7e9, 22.7e9); // 53.06 GPa
+//! let volume = std::f64::consts::PI * 0.06165_f64.powi(2) * 0.1233;
+//! let sigma_b = weibull.static_strength(e, volume);
+//! assert!((sigma_b / 7.34e6 - 1.0).abs() < 5e-3); // paper §3.3: 7.34 MPa
+//!
+//! // Seed 1000 particles' flaws (reproducible: same seed, same flaws).
+//! let model = BenzAsphaug::seed(BenzAsphaugParams::new(weibull, 42), 1000, volume).unwrap();
+//! assert!(model.flaws().n_flaws(0).unwrap() >= 1);
+//!
+//! // A particle strained just past its weakest flaw starts to crack.
+//! let eps = model.flaws().min_threshold(7).unwrap();
+//! let input = DamageInput {
+//!     max_principal_stress: 1.001 * eps * e,
+//!     youngs_modulus: e,
+//!     longitudinal_wave_speed: 4593.3,
+//!     particle_size: 1.0e-3,
+//!     damage: 0.0,
+//! };
+//! let eval = model.evaluate(7, &input);
+//! assert!(eval.rate > 0.0); // d(D^(1/3))/dt = n_act · 0.4 c_L / R_s
+//! // One explicit step of s = D^(1/3), bounded by D ≤ n_act/n_tot.
+//! let s = 0.0 + 1.0e-6 * eval.rate;
+//! let bounded = apply_bounds(model.variable(), s, eval.bounds);
+//! assert!(bounded.damage <= eval.bounds.max);
+//! assert_eq!(bounded.action, BoundAction::CappedAtMax); // 1 µs lets the crack outgrow the cap
+//! ```
+//!
+//! ## Feature flags
+//! None.
+
+pub mod benz_asphaug;
+pub mod choice;
+pub mod elastic;
+pub mod error;
+pub mod model;
+pub mod none;
+pub mod params;
+pub mod tensile;
+pub mod weibull;
+
+pub use benz_asphaug::{BenzAsphaug, BenzAsphaugParams, CRACK_SPEED_FRACTION_BA94, GrowthLaw};
+pub use choice::BuiltinDamage;
+pub use elastic::{longitudinal_wave_speed, poisson_ratio, youngs_modulus};
+pub use error::DamageError;
+pub use model::{
+    BoundAction, Bounded, DamageBounds, DamageEval, DamageInput, DamageModel, DamageVariable,
+    apply_bounds, max_principal_stress,
+};
+pub use none::NoDamage;
+pub use params::{NamedWeibull, WeibullParams};
+pub use tensile::{MaxTensileStress, TensileFailure};
+pub use weibull::{FlawSet, min_activation_strain, static_strength};

@@ -1,8 +1,19 @@
 //! # sph-impact
 //!
-//! The solver assembled from the other crates.
+//! The Riemann-SPH solver assembled from the workspace crates (paper §2): particle state,
+//! derivative evaluation as a gather loop over CSR neighbour lists, RK2 time integration
+//! with the adaptive CFL step, smoothing-length (scalar or ASPH) update, boundaries
+//! (free surface, reflecting wall, periodic) — and the verification problems.
 //!
-//! **Status:** scaffold. This crate will own: materials, the scene description
-//! (serde/TOML), the state and RK2 integrator with its CFL step, the smoothing-length
-//! update, checkpoints, and the `sph-impact` command-line program (`run`, `check`,
-//! `verify`, `materials`).
+//! **Status:** fluid dynamics (ideal gas and any `EquationOfState`). Strength, damage,
+//! scenes, impact diagnostics and the full command-line program follow.
+//!
+//! ## Feature flags
+//! None.
+
+pub mod cli;
+pub mod plot;
+pub mod solver;
+pub mod verify;
+
+pub use solver::*;

@@ -29,6 +29,9 @@ pub enum InterfaceCoupling {
     Fsisph,
     /// Pure Riemann interface: b = 0 for every pair (ignores damage).
     Riemann,
+    /// Classic SPH: v* = (v_i + v_j)/2 for every pair (no Riemann solution); with
+    /// Monaghan viscosity this is standard SPH, kept as a reference.
+    Mean,
 }
 
 /// Everything the interface velocity of pair (i, j) depends on.
@@ -68,6 +71,7 @@ pub fn coupling_weight(
         InterfaceCoupling::Study => b,
         InterfaceCoupling::Fsisph => b * b,
         InterfaceCoupling::Riemann => 0.0,
+        InterfaceCoupling::Mean => 1.0,
     }
 }
 
@@ -79,6 +83,9 @@ pub fn interface_velocity<V: Vector>(
     coupling: InterfaceCoupling,
 ) -> V {
     let mean = (p.v_i + p.v_j) * 0.5;
+    if coupling == InterfaceCoupling::Mean {
+        return mean;
+    }
     let (zi, zj) = (p.right.impedance(), p.left.impedance());
     let z = zi + zj;
     if !(z > 0.0) {
@@ -96,7 +103,7 @@ pub fn interface_velocity<V: Vector>(
     let b = coupling_weight(coupling, p.damage_i, p.damage_j, p.same_material);
     match coupling {
         InterfaceCoupling::Fsisph => mean * b + (v_bar_star + v_p) * (1.0 - b),
-        InterfaceCoupling::Study | InterfaceCoupling::Riemann => {
+        InterfaceCoupling::Study | InterfaceCoupling::Riemann | InterfaceCoupling::Mean => {
             mean * b + v_bar_star * (1.0 - b) + v_p
         }
     }

@@ -1,0 +1,356 @@
+//! Weibull flaw statistics and the deterministic Benz–Asphaug flaw seeding.
+//!
+//! A body of volume V holds n(ε) V = k V ε^m flaws with activation strain below ε
+//! (paper §3.3). Benz & Asphaug (1995, CPC 87:253, §3) realise this population
+//! explicitly: the j-th weakest flaw of the body has threshold
+//!
+//! ```text
+//! ε_j = (j / (kV))^(1/m),   j = 1, 2, …
+//! ```
+//!
+//! (the strain at which n(ε) V = j), and each flaw goes to a particle drawn uniformly at
+//! random, until every particle holds at least one flaw. The total number of flaws is
+//! then the coupon-collector number, N·H_N ≈ N (ln N + 0.5772) on average, i.e. about
+//! ln N + 0.58 flaws per particle (verification.md §7). The weakest flaw of the body is
+//! exactly ε_1 = (kV)^(−1/m), so the body's static strength is σ_b = E (kV)^(−1/m).
+//!
+//! Seeding is sequential (one random stream, flaws in order j = 1, 2, …), so the flaw
+//! set depends only on (k, m, V, N, seed), never on the number of threads.
+
+use crate::error::DamageError;
+use crate::params::WeibullParams;
+use rand::{Rng, SeedableRng};
+use rand_pcg::Pcg64Mcg;
+use serde::{Deserialize, Serialize};
+
+/// ε_min = (kV)^(−1/m): the activation strain of the weakest flaw in a volume V (the
+/// strain at which k V ε^m = 1). Benz & Asphaug 1995; verification.md §7.
+#[inline]
+pub fn min_activation_strain(k: f64, m: f64, volume: f64) -> f64 {
+    (k * volume).powf(-1.0 / m)
+}
+
+/// Static tensile strength of a volume V: σ_b = E (kV)^(−1/m) (paper §3.3). The size
+/// effect d ln σ_b / d ln V = −1/m.
+#[inline]
+pub fn static_strength(youngs_modulus: f64, k: f64, m: f64, volume: f64) -> f64 {
+    youngs_modulus * min_activation_strain(k, m, volume)
+}
+
+/// The threshold of the j-th flaw (j ≥ 1) of a body with kV flaws per unit strain^m:
+/// ε_j = (j/(kV))^(1/m). `inv_m` = 1/m.
+#[inline]
+fn threshold(j: u64, kv: f64, inv_m: f64) -> f64 {
+    (j as f64 / kv).powf(inv_m)
+}
+
+/// The flaws of every particle in compressed-sparse-row form: the activation strains of
+/// particle i are `thresholds[offsets[i]..offsets[i+1]]`, sorted ascending, at least one
+/// per particle.
+///
+/// Serialisable for checkpoints; deserialisation checks these invariants.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(try_from = "FlawSetUnchecked")]
+pub struct FlawSet {
+    params: WeibullParams,
+    total_volume: f64,
+    seed: u64,
+    offsets: Vec<usize>,
+    thresholds: Vec<f64>,
+}
+
+#[derive(Deserialize)]
+struct FlawSetUnchecked {
+    params: WeibullParams,
+    total_volume: f64,
+    seed: u64,
+    offsets: Vec<usize>,
+    thresholds: Vec<f64>,
+}
+
+impl TryFrom<FlawSetUnchecked> for FlawSet {
+    type Error = DamageError;
+    fn try_from(raw: FlawSetUnchecked) -> Result<Self, DamageError> {
+        let corrupt = |reason| Err(DamageError::CorruptFlawSet { reason });
+        if !(raw.total_volume.is_finite() && raw.total_volume > 0.0) {
+            return corrupt("total volume is not positive and finite");
+        }
+        if raw.offsets.len() < 2 || raw.offsets[0] != 0 {
+            return corrupt("offsets must start at 0 and cover at least one particle");
+        }
+        if raw.offsets.last() != Some(&raw.thresholds.len()) {
+            return corrupt("the last offset must equal the number of thresholds");
+        }
+        for w in raw.offsets.windows(2) {
+            if w[1] <= w[0] {
+                return corrupt("every particle needs at least one flaw (offsets increasing)");
+            }
+            let t = &raw.thresholds[w[0]..w[1]];
+            if !t.iter().all(|x| x.is_finite() && *x > 0.0) {
+                return corrupt("thresholds must be positive and finite");
+            }
+            if !t.windows(2).all(|p| p[0] <= p[1]) {
+                return corrupt("thresholds must be sorted ascending per particle");
+            }
+        }
+        Ok(FlawSet {
+            params: raw.params,
+            total_volume: raw.total_volume,
+            seed: raw.seed,
+            offsets: raw.offsets,
+            thresholds: raw.thresholds,
+        })
+    }
+}
+
+/// A uniform integer in `0..n` (n ≥ 1) from raw 64-bit outputs, by Lemire's multiply-
+/// and-reject method (Lemire 2019, ACM TOMACS 29:3). Written out here rather than taken
+/// from `rand`'s distributions so that the flaw set of a seed stays the same whatever
+/// `rand` version samples ranges; rand_pcg's output stream is itself value-stable.
+#[inline]
+fn uniform_below<R: Rng>(rng: &mut R, n: u64) -> u64 {
+    let mut product = u128::from(rng.next_u64()) * u128::from(n);
+    let mut low = product as u64;
+    if low < n {
+        // Reject the values that would make some outcomes more likely.
+        let threshold = n.wrapping_neg() % n;
+        while low < threshold {
+            product = u128::from(rng.next_u64()) * u128::from(n);
+            low = product as u64;
+        }
+    }
+    (product >> 64) as u64
+}
+
+impl FlawSet {
+    /// Seeds flaws for `n_particles` particles of a body of total volume `total_volume`
+    /// (m³) by the Benz–Asphaug procedure (module docs), with the random stream
+    /// `Pcg64Mcg::seed_from_u64(seed)`. Same arguments → identical flaw set.
+    pub fn seed_benz_asphaug(
+        params: WeibullParams,
+        n_particles: usize,
+        total_volume: f64,
+        seed: u64,
+    ) -> Result<FlawSet, DamageError> {
+        if n_particles == 0 {
+            return Err(DamageError::NoParticles);
+        }
+        let limit = u32::MAX as usize;
+        if n_particles > limit {
+            return Err(DamageError::TooManyParticles {
+                count: n_particles,
+                limit,
+            });
+        }
+        if !(total_volume.is_finite() && total_volume > 0.0) {
+            return Err(DamageError::Parameter {
+                field: "total_volume",
+                value: total_volume,
+                reason: "must be positive and finite",
+            });
+        }
+        let kv = params.k() * total_volume;
+        if !(kv.is_finite() && kv > 0.0) {
+            return Err(DamageError::Parameter {
+                field: "k*V",
+                value: kv,
+                reason: "the expected flaw count per unit strain^m must be positive and finite",
+            });
+        }
+
+        // Pass 1: draw the owner of flaws j = 1, 2, … until every particle has one.
+        let n = n_particles;
+        let mut rng = Pcg64Mcg::seed_from_u64(seed);
+        let mut counts = vec![0usize; n];
+        let expected = (n as f64 * ((n as f64).ln() + 1.0)) as usize + 1;
+        let mut owner: Vec<u32> = Vec::with_capacity(expected);
+        let mut uncovered = n;
+        while uncovered > 0 {
+            let p = uniform_below(&mut rng, n as u64) as usize;
+            if counts[p] == 0 {
+                uncovered -= 1;
+            }
+            counts[p] += 1;
+            owner.push(p as u32);
+        }
+
+        // Pass 2: CSR by a stable counting sort; flaws arrive in increasing j, so each
+        // particle's thresholds come out ascending.
+        let mut offsets = Vec::with_capacity(n + 1);
+        offsets.push(0usize);
+        let mut total = 0usize;
+        for &c in &counts {
+            total += c;
+            offsets.push(total);
+        }
+        let mut cursor: Vec<usize> = offsets[..n].to_vec();
+        let mut thresholds = vec![0.0f64; total];
+        let inv_m = 1.0 / params.m();
+        for (j0, &p) in owner.iter().enumerate() {
+            let slot = &mut cursor[p as usize];
+            thresholds[*slot] = threshold(j0 as u64 + 1, kv, inv_m);
+            *slot += 1;
+        }
+        Ok(FlawSet {
+            params,
+            total_volume,
+            seed,
+            offsets,
+            thresholds,
+        })
+    }
+
+    /// As [`FlawSet::seed_benz_asphaug`], with the body volume V = Σ V_i from the
+    /// particle volumes (m³, each positive and finite).
+    pub fn seed_benz_asphaug_volumes(
+        params: WeibullParams,
+        volumes: &[f64],
+        seed: u64,
+    ) -> Result<FlawSet, DamageError> {
+        for (index, &v) in volumes.iter().enumerate() {
+            if !(v.is_finite() && v > 0.0) {
+                return Err(DamageError::ParticleValue {
+                    index,
+                    field: "volume",
+                    value: v,
+                    reason: "must be positive and finite",
+                });
+            }
+        }
+        let total: f64 = volumes.iter().sum();
+        Self::seed_benz_asphaug(params, volumes.len(), total, seed)
+    }
+
+    /// The threshold of the j-th weakest flaw of the body (j ≥ 1), ε_j = (j/(kV))^(1/m),
+    /// computed exactly as in the seeding. `None` for j = 0.
+    pub fn body_threshold(&self, j: u64) -> Option<f64> {
+        (j >= 1).then(|| {
+            threshold(
+                j,
+                self.params.k() * self.total_volume,
+                1.0 / self.params.m(),
+            )
+        })
+    }
+
+    /// The Weibull parameters used.
+    pub fn params(&self) -> WeibullParams {
+        self.params
+    }
+
+    /// The body volume V used, m³.
+    pub fn total_volume(&self) -> f64 {
+        self.total_volume
+    }
+
+    /// The seed used.
+    pub fn seed(&self) -> u64 {
+        self.seed
+    }
+
+    /// Number of particles.
+    pub fn n_particles(&self) -> usize {
+        self.offsets.len() - 1
+    }
+
+    /// Total number of flaws in the body.
+    pub fn total_flaws(&self) -> usize {
+        self.thresholds.len()
+    }
+
+    /// Mean flaws per particle (≈ ln N + 0.58 for Benz–Asphaug seeding).
+    pub fn mean_flaws_per_particle(&self) -> f64 {
+        self.total_flaws() as f64 / self.n_particles() as f64
+    }
+
+    /// Activation strains of particle `i`, ascending; `None` if `i` is out of range.
+    #[inline]
+    pub fn thresholds(&self, i: usize) -> Option<&[f64]> {
+        let start = *self.offsets.get(i)?;
+        let end = *self.offsets.get(i + 1)?;
+        Some(&self.thresholds[start..end])
+    }
+
+    /// Number of flaws of particle `i`.
+    #[inline]
+    pub fn n_flaws(&self, i: usize) -> Option<usize> {
+        self.thresholds(i).map(<[f64]>::len)
+    }
+
+    /// Weakest flaw of particle `i`: the strain at which it starts to crack.
+    #[inline]
+    pub fn min_threshold(&self, i: usize) -> Option<f64> {
+        self.thresholds(i).map(|t| t[0])
+    }
+
+    /// Number of flaws of particle `i` activated at local strain `strain`, i.e. with
+    /// threshold ≤ strain (a NaN or non-positive strain activates none).
+    #[inline]
+    pub fn activated(&self, i: usize, strain: f64) -> Option<usize> {
+        self.thresholds(i)
+            .map(|t| t.partition_point(|&eps| eps <= strain))
+    }
+
+    /// Heap and inline memory held, bytes.
+    pub fn memory_bytes(&self) -> usize {
+        std::mem::size_of::<Self>()
+            + self.offsets.capacity() * std::mem::size_of::<usize>()
+            + self.thresholds.capacity() * std::mem::size_of::<f64>()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A generator replaying fixed outputs, to drive the rejection branch.
+    struct Replay(Vec<u64>, usize);
+    impl rand::TryRng for Replay {
+        type Error = core::convert::Infallible;
+        fn try_next_u32(&mut self) -> Result<u32, Self::Error> {
+            Ok(self.try_next_u64()? as u32)
+        }
+        fn try_next_u64(&mut self) -> Result<u64, Self::Error> {
+            self.1 += 1;
+            Ok(self.0[self.1 - 1])
+        }
+        fn try_fill_bytes(&mut self, _dst: &mut [u8]) -> Result<(), Self::Error> {
+            Ok(())
+        }
+    }
+
+    #[test]
+    fn uniform_below_maps_the_64_bit_range_by_its_high_product_word() {
+        // n = 3: 2^64 mod 3 = 1, so only the raw value 0 (low word 0 < 1) is rejected.
+        let mut r = Replay(vec![0, u64::MAX, 1 << 63], 0);
+        assert_eq!(uniform_below(&mut r, 3), 2); // 0 rejected, then ⌊(2^64−1)·3/2^64⌋ = 2
+        assert_eq!(r.1, 2);
+        assert_eq!(uniform_below(&mut r, 3), 1); // ⌊2^63·3/2^64⌋ = 1
+        let mut one = Replay(vec![12345], 0);
+        assert_eq!(uniform_below(&mut one, 1), 0);
+    }
+
+    #[test]
+    fn uniform_below_is_uniform() {
+        // χ² over 7 bins of 70 000 draws; the 0.1 % critical value for 6 d.o.f. is 22.5.
+        let mut rng = Pcg64Mcg::seed_from_u64(1);
+        let mut bins = [0u32; 7];
+        for _ in 0..70_000 {
+            bins[uniform_below(&mut rng, 7) as usize] += 1;
+        }
+        let chi2: f64 = bins
+            .iter()
+            .map(|&b| (b as f64 - 10_000.0).powi(2) / 10_000.0)
+            .sum();
+        assert!(chi2 < 22.5, "{chi2} {bins:?}");
+    }
+
+    #[test]
+    fn threshold_formula_point_values() {
+        // kV = 1e10, m = 10: ε_j = (j/1e10)^(1/10), so ε_1 = 0.1 and ε_(1e10) = 1.
+        assert!((threshold(1, 1e10, 0.1) - 0.1).abs() < 1e-16);
+        assert_eq!(threshold(10_000_000_000, 1e10, 0.1), 1.0);
+        assert!((min_activation_strain(1e9, 10.0, 10.0) - 0.1).abs() < 1e-16);
+        assert!((static_strength(5e10, 1e9, 10.0, 10.0) - 5e9).abs() < 1e-5);
+    }
+}

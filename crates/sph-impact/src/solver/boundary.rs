@@ -1,0 +1,139 @@
+//! Boundaries as ghost particles: before each derivative evaluation, every particle
+//! within its support radius of a boundary gets a ghost copy (mirrored across a
+//! reflecting wall, shifted by the period for a periodic pair of faces). Ghosts take
+//! part in the pair sums of real particles only. A free surface needs nothing.
+
+use serde::{Deserialize, Serialize};
+use sph_core::{Dimension, Tensor, Vector};
+
+/// A boundary condition.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(bound = "", rename_all = "kebab-case", tag = "kind")]
+pub enum Boundary<D: Dimension> {
+    /// A rigid, frictionless wall: the plane through `point` with unit `normal`
+    /// pointing into the material. Ghosts mirror position and the normal velocity.
+    Wall {
+        /// A point on the wall.
+        point: D::Vector,
+        /// Unit normal into the material.
+        normal: D::Vector,
+    },
+    /// Periodic in `axis` between `lo` and `hi` (period hi − lo).
+    Periodic {
+        /// Axis index (0 = x).
+        axis: usize,
+        /// Lower face.
+        lo: f64,
+        /// Upper face.
+        hi: f64,
+    },
+}
+
+/// A ghost: which particle it copies and how (an affine map of position and a linear
+/// map of vectors such as the velocity).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Ghost<D: Dimension> {
+    /// Index (in the extended arrays) of the particle copied.
+    pub source: usize,
+    pub position: D::Vector,
+    /// Linear map applied to vectors (reflection or identity).
+    pub map: D::Tensor,
+}
+
+impl<D: Dimension> Boundary<D> {
+    /// Checks the parameters; `Err` names the problem.
+    pub fn validate(&self) -> Result<(), String> {
+        match self {
+            Boundary::Wall { point, normal } => {
+                if !point.all_finite() || !normal.all_finite() || (normal.norm() - 1.0).abs() > 1e-9
+                {
+                    return Err(format!(
+                        "wall normal {:?} must be a finite unit vector",
+                        normal.to_array3()
+                    ));
+                }
+            }
+            Boundary::Periodic { axis, lo, hi } => {
+                if *axis >= D::DIM {
+                    return Err(format!(
+                        "periodic axis {axis} does not exist in {} dimensions",
+                        D::DIM
+                    ));
+                }
+                if !(hi > lo) || !lo.is_finite() || !hi.is_finite() {
+                    return Err(format!(
+                        "periodic interval [{lo}, {hi}] is empty or not finite"
+                    ));
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// Ghosts of the particles `positions[k]` with support radius `radius[k]`.
+    pub(crate) fn ghosts(&self, positions: &[D::Vector], radius: &[f64], out: &mut Vec<Ghost<D>>) {
+        match *self {
+            Boundary::Wall { point, normal } => {
+                let reflect = D::Tensor::IDENTITY - D::Tensor::outer(normal, normal) * 2.0;
+                for (k, &x) in positions.iter().enumerate() {
+                    let d = (x - point).dot(normal);
+                    if d < radius[k] {
+                        out.push(Ghost {
+                            source: k,
+                            position: x - normal * (2.0 * d),
+                            map: reflect,
+                        });
+                    }
+                }
+            }
+            Boundary::Periodic { axis, lo, hi } => {
+                let period = hi - lo;
+                for (k, &x) in positions.iter().enumerate() {
+                    let c = x.component(axis);
+                    let shift = if c - lo < radius[k] {
+                        period
+                    } else if hi - c < radius[k] {
+                        -period
+                    } else {
+                        continue;
+                    };
+                    out.push(Ghost {
+                        source: k,
+                        position: x + D::Vector::unit(axis) * shift,
+                        map: D::Tensor::IDENTITY,
+                    });
+                }
+            }
+        }
+    }
+
+    /// Brings a particle that left the domain back: wraps across periodic faces, mirrors
+    /// back through a wall. Returns true when it changed something.
+    pub(crate) fn enforce(&self, x: &mut D::Vector, v: &mut D::Vector) -> bool {
+        match *self {
+            Boundary::Wall { point, normal } => {
+                let d = (*x - point).dot(normal);
+                if d < 0.0 {
+                    *x -= normal * (2.0 * d);
+                    let vn = v.dot(normal);
+                    if vn < 0.0 {
+                        *v -= normal * (2.0 * vn);
+                    }
+                    true
+                } else {
+                    false
+                }
+            }
+            Boundary::Periodic { axis, lo, hi } => {
+                let c = x.component(axis);
+                if c < lo || c >= hi {
+                    let period = hi - lo;
+                    x.set_component(axis, lo + (c - lo).rem_euclid(period));
+                    true
+                } else {
+                    false
+                }
+            }
+        }
+    }
+}

@@ -1,0 +1,165 @@
+//! Scheme settings: everything about the numerical method that is not a material.
+
+use serde::{Deserialize, Serialize};
+use sph_kernel::KernelChoice;
+use sph_riemann::{ArtificialStress, InterfaceCoupling, Limiter, MonaghanViscosity, RiemannSolver};
+
+/// How the specific internal energy is evolved.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum EnergyForm {
+    /// The study's equation (paper §2): de_i/dt = −2 Σ_j m_j σ_i/(ρ_iρ_j):(v_i − v*)⊗∇W,
+    /// plus the viscous heating ½ Σ_j m_j Π_ij v_ij·∇W. Total energy is conserved only up
+    /// to the difference between v* and the pair mean velocity.
+    Study,
+    /// The compatible form: each pair's work on i is its pair force times (v_i − v*),
+    /// de_i/dt = −Σ_j m_j F_ij·(v_i − v*), so kinetic + internal energy is conserved to
+    /// round-off for any v* (v*_ij = v*_ji and F_ji = −F_ij).
+    #[default]
+    Compatible,
+}
+
+/// The continuity equation.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum DensityForm {
+    /// The study's form (paper §2): dρ_i/dt = 2ρ_i Σ_j (m_j/ρ_j)(v_i − v*)·∇W.
+    #[default]
+    Volume,
+    /// The mass form: dρ_i/dt = 2 Σ_j m_j (v_i − v*)·∇W.
+    Mass,
+    /// Summation density ρ_i = Σ_j m_j W̄_ij (self included), recomputed from the
+    /// positions at every stage: tied to the particle volumes, so it cannot drift at
+    /// strong shocks; unsuitable at free surfaces of solids (the kernel sum is truncated).
+    Summation,
+}
+
+/// How smoothing lengths follow the flow.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case", tag = "kind")]
+pub enum SmoothingMode {
+    /// Scalar support radius h_i = n_target (m_i/ρ_i)^(1/d), set from the density at every
+    /// stage, so the neighbour count stays near its target as the material compresses.
+    #[default]
+    Scalar,
+    /// ASPH: a symmetric tensor H_i. Its metric G = HᵀH is advected with the velocity
+    /// gradient L (dG/dt = −(LᵀG + GL), so the support ellipsoid deforms with the
+    /// material), then relaxed toward the ideal H: the same shape scaled to the volume
+    /// n_target^d m/ρ, with the axis ratio limited to `max_aspect`.
+    Asph {
+        /// Largest allowed ratio of the longest to the shortest support axis.
+        max_aspect: f64,
+    },
+}
+
+/// The numerical scheme.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct SchemeConfig {
+    /// Smoothing kernel (the study: Wendland C2).
+    pub kernel: KernelChoice,
+    /// Support radius in particle spacings, h = n_target Δx (the study: 2.5).
+    pub n_target: f64,
+    /// CFL number λ (the study: 0.25).
+    pub cfl: f64,
+    /// Monaghan viscosity coefficients (the study: α = β = 1).
+    pub viscosity: MonaghanViscosity,
+    /// The length in μ_ij is this factor times the mean support radius; 0.5 makes it
+    /// Monaghan's smoothing length for a kernel reaching 2h.
+    pub viscosity_length_factor: f64,
+    /// Artificial stress (the study: ε = 0.2, n = 4; 0 disables).
+    pub artificial_stress: ArtificialStress,
+    /// Star-state solver for v*.
+    pub riemann: RiemannSolver,
+    /// Damage/material coupling b_ij in v*.
+    pub coupling: InterfaceCoupling,
+    /// Reconstruction of the normal velocity and pressure toward the pair midpoint.
+    pub limiter: Limiter,
+    /// Energy equation.
+    pub energy: EnergyForm,
+    /// Continuity equation.
+    pub density: DensityForm,
+    /// Linear gradient correction in the continuity equation and the velocity gradient:
+    /// ∇W → M_i⁻ᵀ∇W with M_i = Σ_j V_j (x_j − x_i) ⊗ ∇_i W̄_ij, exact for linear velocity
+    /// fields (Bonet & Lok 1999; miluphcuda's tensorial correction). The momentum
+    /// equation keeps the plain, antisymmetric gradient, so conservation is unchanged.
+    pub gradient_correction: bool,
+    /// Smoothing-length evolution.
+    pub smoothing: SmoothingMode,
+}
+
+impl Default for SchemeConfig {
+    fn default() -> Self {
+        Self {
+            kernel: KernelChoice::WendlandC2,
+            n_target: 2.5,
+            cfl: 0.25,
+            viscosity: MonaghanViscosity {
+                alpha: 1.0,
+                beta: 1.0,
+            },
+            viscosity_length_factor: 0.5,
+            artificial_stress: ArtificialStress {
+                epsilon: 0.0,
+                exponent: 4,
+            },
+            riemann: RiemannSolver::Acoustic,
+            coupling: InterfaceCoupling::Study,
+            limiter: Limiter::VanLeer,
+            energy: EnergyForm::Compatible,
+            density: DensityForm::Volume,
+            gradient_correction: false,
+            smoothing: SmoothingMode::Scalar,
+        }
+    }
+}
+
+impl SchemeConfig {
+    /// Checks ranges; the error names the field.
+    pub fn validate(&self) -> Result<(), crate::SolverError> {
+        let bad = |field: &'static str, value: f64, reason: &'static str| {
+            Err(crate::SolverError::BadConfig {
+                field,
+                value,
+                reason,
+            })
+        };
+        if !(self.n_target > 0.5 && self.n_target.is_finite()) {
+            return bad(
+                "n_target",
+                self.n_target,
+                "must be a finite number of spacings > 0.5",
+            );
+        }
+        if !(self.cfl > 0.0 && self.cfl <= 1.0) {
+            return bad("cfl", self.cfl, "must be in (0, 1]");
+        }
+        if !(self.viscosity.alpha >= 0.0 && self.viscosity.beta >= 0.0) {
+            return bad(
+                "viscosity",
+                self.viscosity.alpha.min(self.viscosity.beta),
+                "α and β must be ≥ 0",
+            );
+        }
+        if !(self.viscosity_length_factor > 0.0) {
+            return bad(
+                "viscosity_length_factor",
+                self.viscosity_length_factor,
+                "must be > 0",
+            );
+        }
+        if !(self.artificial_stress.epsilon >= 0.0) {
+            return bad(
+                "artificial_stress.epsilon",
+                self.artificial_stress.epsilon,
+                "must be ≥ 0",
+            );
+        }
+        if let SmoothingMode::Asph { max_aspect } = self.smoothing
+            && !(max_aspect >= 1.0)
+        {
+            return bad("smoothing.max_aspect", max_aspect, "must be ≥ 1");
+        }
+        Ok(())
+    }
+}

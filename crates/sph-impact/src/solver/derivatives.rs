@@ -1,0 +1,276 @@
+//! The gather loops: per real particle, sums over its CSR neighbours (paper §2).
+//!
+//! Pass 1 (`gradients`): velocity gradient L_i = Σ_j V_j (v_j − v_i) ⊗ ∇_i W̄_ij and
+//! pressure gradient, for reconstruction and the ASPH update.
+//!
+//! Pass 2 (`rates`), for each pair with r = x_i − x_j, r̂ = r/|r|, j left and i right:
+//!
+//! * v* from the pair's Riemann problem (paper §2.1) on limited reconstructed states,
+//! * dρ_i/dt = 2 ρ_i Σ_j (m_j/ρ_j)(v_i − v*)·∇_i W̄_ij,
+//! * dv_i/dt = Σ_j m_j F_ij ∇_i W̄_ij with the pair coefficient
+//!   F_ij = −(P_i + P_j)/(ρ_iρ_j) − Π_ij − A_ij (pressure, Monaghan viscosity, artificial
+//!   stress), symmetric in i, j, so the pair forces cancel exactly,
+//! * de_i/dt by the chosen [`EnergyForm`].
+//!
+//! Each particle's sums depend only on its own sorted neighbour row, so results are
+//! identical for any number of threads.
+
+use crate::solver::config::{DensityForm, EnergyForm, SchemeConfig};
+use crate::solver::pair_kernel::PairKernel;
+use crate::solver::state::Extended;
+use rayon::prelude::*;
+use sph_core::{Dimension, NeighborList, Tensor, Vector};
+use sph_riemann::{PairInterface, SideState, interface_velocity, reconstruct};
+
+/// Per-particle gradients (pass 1).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Gradients<D: Dimension> {
+    pub velocity: D::Tensor,
+    pub pressure: D::Vector,
+    /// M_i⁻ᵀ, the linear gradient correction (identity when off or singular).
+    pub correction: D::Tensor,
+}
+
+/// Per-particle time derivatives and time-step ingredients (pass 2).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Rates<D: Dimension> {
+    pub drho: f64,
+    pub dv: D::Vector,
+    pub de: f64,
+    /// Largest approach speed max_j max(0, −v_ij·r̂) among the neighbours.
+    pub approach: f64,
+    /// The part of dv/dt exerted by ghosts (boundaries): their impulse is accounted so
+    /// that momentum balances to round-off even with walls.
+    pub dv_boundary: D::Vector,
+}
+
+/// Summation density ρ_i = m_i W(0) + Σ_j m_j W̄_ij over real particles.
+pub(crate) fn summation_density<D: Dimension, P: PairKernel<D>>(
+    ext: &Extended<D>,
+    list: &NeighborList,
+    pk: &P,
+) -> Vec<f64> {
+    (0..ext.n_real)
+        .into_par_iter()
+        .map(|i| {
+            let xi = ext.position[i];
+            let self_term = ext.mass[i] * pk.w(i, i, D::Vector::ZERO);
+            list.neighbors(i).iter().fold(self_term, |acc, &j| {
+                let j = j as usize;
+                acc + ext.mass[j] * pk.w(i, j, xi - ext.position[j])
+            })
+        })
+        .collect()
+}
+
+/// Pass 1.
+pub(crate) fn gradients<D: Dimension, P: PairKernel<D>>(
+    ext: &Extended<D>,
+    list: &NeighborList,
+    pk: &P,
+    correct: bool,
+) -> Vec<Gradients<D>> {
+    (0..ext.n_real)
+        .into_par_iter()
+        .map(|i| {
+            let (xi, vi, pi) = (ext.position[i], ext.velocity[i], ext.pressure[i]);
+            let mut l = D::Tensor::ZERO;
+            let mut gp = D::Vector::ZERO;
+            let mut m = D::Tensor::ZERO;
+            for &j in list.neighbors(i) {
+                let j = j as usize;
+                let dx = ext.position[j] - xi;
+                let g = pk.grad(i, j, -dx);
+                let vol = ext.mass[j] / ext.density[j];
+                l += D::Tensor::outer(ext.velocity[j] - vi, g) * vol;
+                gp += g * ((ext.pressure[j] - pi) * vol);
+                m += D::Tensor::outer(dx, g) * vol;
+            }
+            // L = L_raw M⁻¹ and ∇P = M⁻ᵀ ∇P_raw are exact for linear fields. A nearly
+            // singular M (a particle with too few neighbours) keeps the raw estimates.
+            let inv = if correct {
+                well_conditioned_inverse(&m)
+            } else {
+                None
+            };
+            match inv {
+                Some(mi) => Gradients {
+                    velocity: l.mul_tensor(&mi),
+                    pressure: mi.transpose().mul_vec(gp),
+                    correction: mi.transpose(),
+                },
+                None => Gradients {
+                    velocity: l,
+                    pressure: gp,
+                    correction: D::Tensor::IDENTITY,
+                },
+            }
+        })
+        .collect()
+}
+
+/// M⁻¹ if M is invertible and not too far from the identity (condition number of its
+/// symmetric part below 100), else None.
+fn well_conditioned_inverse<T: Tensor>(m: &T) -> Option<T> {
+    let e = m.symmetric().sym_eigen();
+    let n = T::Vector::DIM;
+    let (lo, hi) = (e.values[0], e.values[n - 1]);
+    if !(lo > 0.0) || hi > 100.0 * lo {
+        return None;
+    }
+    m.inverse()
+}
+
+/// Pass 2.
+pub(crate) fn rates<D: Dimension, P: PairKernel<D>>(
+    ext: &Extended<D>,
+    list: &NeighborList,
+    pk: &P,
+    grads: Option<&[Gradients<D>]>,
+    scheme: &SchemeConfig,
+) -> Vec<Rates<D>> {
+    let visc = scheme.viscosity;
+    let astress = scheme.artificial_stress;
+    let use_astress = !astress.is_off();
+    (0..ext.n_real)
+        .into_par_iter()
+        .map(|i| {
+            let (xi, vi) = (ext.position[i], ext.velocity[i]);
+            let (rhoi, pi, ci, mi_mat) = (
+                ext.density[i],
+                ext.pressure[i],
+                ext.sound_speed[i],
+                ext.material[i],
+            );
+            let ri = if use_astress {
+                astress.r(pi, rhoi)
+            } else {
+                0.0
+            };
+            let mut out = Rates {
+                drho: 0.0,
+                dv: D::Vector::ZERO,
+                de: 0.0,
+                approach: 0.0,
+                dv_boundary: D::Vector::ZERO,
+            };
+            for &j in list.neighbors(i) {
+                let j = j as usize;
+                let r = xi - ext.position[j];
+                let dist = r.norm();
+                if dist == 0.0 {
+                    // Coincident particles exert no force (∇W = 0) and define no axis.
+                    continue;
+                }
+                let r_hat = r / dist;
+                let g = pk.grad(i, j, r);
+                let (vj, rhoj, pj, cj, mj) = (
+                    ext.velocity[j],
+                    ext.density[j],
+                    ext.pressure[j],
+                    ext.sound_speed[j],
+                    ext.mass[j],
+                );
+                let vij = vi - vj;
+                out.approach = out.approach.max(-vij.dot(r_hat));
+
+                // Left (j) and right (i) states along r̂, reconstructed to the midpoint.
+                let (mut ui, mut uj) = (vi.dot(r_hat), vj.dot(r_hat));
+                let (mut pfi, mut pfj) = (pi, pj);
+                if let Some(gr) = grads {
+                    let gi = &gr[i];
+                    let src = &gr[ext.source[j] as usize];
+                    // A ghost's gradients are its source's, mapped: M L Mᵀ and M ∇P.
+                    let m = &ext.map[j];
+                    let (lj, gpj) = if j < ext.n_real {
+                        (src.velocity, src.pressure)
+                    } else {
+                        (
+                            m.mul_tensor(&src.velocity).mul_tensor(&m.transpose()),
+                            m.mul_vec(src.pressure),
+                        )
+                    };
+                    let half = r * 0.5;
+                    let dui = r_hat.dot(gi.velocity.mul_vec(-half));
+                    let duj = r_hat.dot(lj.mul_vec(half));
+                    (ui, uj) = reconstruct(ui, uj, dui, duj, scheme.limiter);
+                    (pfi, pfj) = reconstruct(
+                        pi,
+                        pj,
+                        gi.pressure.dot(-half),
+                        gpj.dot(half),
+                        scheme.limiter,
+                    );
+                }
+                let right = SideState {
+                    density: rhoi,
+                    velocity: ui,
+                    pressure: pfi,
+                    sound_speed: ci,
+                };
+                let left = SideState {
+                    density: rhoj,
+                    velocity: uj,
+                    pressure: pfj,
+                    sound_speed: cj,
+                };
+                let v_star = interface_velocity(
+                    &PairInterface {
+                        v_i: vi,
+                        v_j: vj,
+                        r_hat,
+                        right,
+                        left,
+                        damage_i: 0.0,
+                        damage_j: 0.0,
+                        same_material: mi_mat == ext.material[j],
+                    },
+                    scheme.riemann,
+                    scheme.coupling,
+                );
+
+                let h_bar = scheme.viscosity_length_factor * 0.5 * (pk.h(i) + pk.h(j));
+                let pi_ij = visc.pi(vij, r, 0.5 * (rhoi + rhoj), 0.5 * (ci + cj), h_bar);
+                let a_ij = if use_astress {
+                    let rj = astress.r(pj, rhoj);
+                    if ri + rj > 0.0 {
+                        let dp = 0.5 * (ext.spacing0[i] + ext.spacing0[j]);
+                        astress.f(ri, rj, pk.w(i, j, r) / pk.w_at(i, j, r_hat, dp))
+                    } else {
+                        0.0
+                    }
+                } else {
+                    0.0
+                };
+                let coef = -(pi + pj) / (rhoi * rhoj) - pi_ij - a_ij;
+                let force = g * (mj * coef);
+                out.dv += force;
+                if j >= ext.n_real {
+                    out.dv_boundary += force;
+                }
+                // The continuity equation uses the corrected gradient when enabled.
+                let gc = match grads {
+                    Some(gr) if scheme.gradient_correction => gr[i].correction.mul_vec(g),
+                    _ => g,
+                };
+                let dvs = (vi - v_star).dot(gc);
+                out.drho += match scheme.density {
+                    DensityForm::Volume => 2.0 * rhoi * mj / rhoj * dvs,
+                    DensityForm::Mass => 2.0 * mj * dvs,
+                    // Summation density is recomputed from positions each stage.
+                    DensityForm::Summation => 0.0,
+                };
+                // Energy: the compatible form pairs with the plain (antisymmetric) gradient
+                // of the momentum equation, which is what makes it exactly conservative.
+                let dvs_plain = (vi - v_star).dot(g);
+                out.de += match scheme.energy {
+                    EnergyForm::Compatible => -mj * coef * dvs_plain,
+                    EnergyForm::Study => {
+                        mj * (2.0 * pi / (rhoi * rhoj) * dvs + 0.5 * (pi_ij + a_ij) * vij.dot(g))
+                    }
+                };
+            }
+            out
+        })
+        .collect()
+}

@@ -1,0 +1,66 @@
+//! Solver errors: each names what is wrong and where.
+
+use thiserror::Error;
+
+/// Errors of the solver.
+#[derive(Debug, Error, Clone, PartialEq)]
+pub enum SolverError {
+    /// A scheme setting out of range.
+    #[error("scheme setting {field} = {value}: {reason}")]
+    BadConfig {
+        /// Field name.
+        field: &'static str,
+        /// Value.
+        value: f64,
+        /// Why.
+        reason: &'static str,
+    },
+    /// The initial state is invalid.
+    #[error("initial state: {0}")]
+    BadState(#[from] sph_core::CoreError),
+    /// A particle refers to a material that does not exist.
+    #[error("particle {index}: material id {material} but only {count} materials are defined")]
+    UnknownMaterial {
+        /// Particle index.
+        index: usize,
+        /// Its material id.
+        material: u16,
+        /// Number of materials.
+        count: usize,
+    },
+    /// The state became unphysical during the run.
+    #[error("step {step}, t = {time:e} s: particle id {id} at {position:?}: {what} = {value:e}")]
+    Unphysical {
+        /// Step number.
+        step: u64,
+        /// Simulated time.
+        time: f64,
+        /// Stable particle id.
+        id: u64,
+        /// Position.
+        position: [f64; 3],
+        /// Which quantity.
+        what: &'static str,
+        /// Its value.
+        value: f64,
+    },
+    /// The time step collapsed.
+    #[error(
+        "step {step}: time step {dt:e} s below the minimum {min:e} s (bound by particle id {id}: {reason})"
+    )]
+    TimestepCollapse {
+        /// Step number.
+        step: u64,
+        /// The step.
+        dt: f64,
+        /// The minimum allowed.
+        min: f64,
+        /// Particle that bound it.
+        id: u64,
+        /// Why.
+        reason: &'static str,
+    },
+    /// A material model could not be built.
+    #[error("material: {0}")]
+    Material(String),
+}

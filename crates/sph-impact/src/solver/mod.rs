@@ -1,0 +1,19 @@
+//! The Riemann-SPH solver (paper §2): state, derivatives, time integration.
+
+pub mod boundary;
+pub mod config;
+mod derivatives;
+pub mod error;
+pub mod material;
+mod pair_kernel;
+pub mod simulation;
+pub mod state;
+pub mod timestep;
+
+pub use boundary::Boundary;
+pub use config::{DensityForm, EnergyForm, SchemeConfig, SmoothingMode};
+pub use error::SolverError;
+pub use material::Material;
+pub use simulation::{Conserved, PhaseTimes, Simulation, StepInfo};
+pub use state::State;
+pub use timestep::TimestepVote;

@@ -1,0 +1,557 @@
+//! The simulation: state, materials, scheme and boundaries, advanced with the
+//! second-order Runge–Kutta (midpoint) method and the adaptive CFL step (paper §2.5).
+
+use crate::solver::boundary::Boundary;
+use crate::solver::config::{DensityForm, SchemeConfig, SmoothingMode};
+use crate::solver::derivatives::{Gradients, Rates, gradients, rates, summation_density};
+use crate::solver::error::SolverError;
+use crate::solver::material::Material;
+use crate::solver::pair_kernel::{ScalarPairKernel, TensorPairKernel, equivalent_radius};
+use crate::solver::state::{Extended, State};
+use crate::solver::timestep::{TimestepVote, acceleration_vote, cfl_vote};
+use rayon::prelude::*;
+use serde::Serialize;
+use sph_core::{
+    CellList, Dimension, NeighborList, NeighborSearch, Particles, ScalarSupport, Tensor,
+    TensorSupport, Vector,
+};
+use sph_kernel::Kernel;
+use std::time::Instant;
+
+/// Wall-clock seconds spent per phase, and the work done.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize)]
+pub struct PhaseTimes {
+    /// Ghosts + neighbour search.
+    pub neighbours: f64,
+    /// Equation-of-state evaluations.
+    pub eos: f64,
+    /// Gradient pass.
+    pub gradients: f64,
+    /// Pair loop (rates).
+    pub pairs: f64,
+    /// State updates, smoothing lengths, checks.
+    pub integration: f64,
+    /// Particle-derivative evaluations (particles × stages).
+    pub derivative_evaluations: u64,
+}
+
+impl PhaseTimes {
+    /// Total of the phases.
+    pub fn total(&self) -> f64 {
+        self.neighbours + self.eos + self.gradients + self.pairs + self.integration
+    }
+}
+
+/// Mass, momentum and energy totals.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+#[serde(bound = "")]
+pub struct Conserved<D: Dimension> {
+    /// Σ m.
+    pub mass: f64,
+    /// Σ m v.
+    pub momentum: D::Vector,
+    /// Σ ½ m v².
+    pub kinetic: f64,
+    /// Σ m e.
+    pub internal: f64,
+}
+
+impl<D: Dimension> Conserved<D> {
+    /// Kinetic + internal.
+    pub fn energy(&self) -> f64 {
+        self.kinetic + self.internal
+    }
+}
+
+/// What one step did.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct StepInfo {
+    /// The step taken (s).
+    pub dt: f64,
+    /// The vote that set it (before clipping to an end time).
+    pub vote: TimestepVote,
+    /// Particles moved back into the domain by a boundary this step.
+    pub boundary_corrections: usize,
+}
+
+struct Stage<D: Dimension> {
+    rates: Vec<Rates<D>>,
+    grads: Option<Vec<Gradients<D>>>,
+    sound_speed: Vec<f64>,
+}
+
+/// A running simulation.
+pub struct Simulation<D: Dimension, K: Kernel> {
+    /// The evolved state.
+    pub state: State<D>,
+    /// Materials by id.
+    pub materials: Vec<Material>,
+    /// The numerical scheme.
+    pub scheme: SchemeConfig,
+    /// Boundary conditions.
+    pub boundaries: Vec<Boundary<D>>,
+    /// Time per phase so far.
+    pub timings: PhaseTimes,
+    /// Momentum delivered by the boundaries so far (ghost forces and particles mirrored
+    /// back through walls): Σ m v(t) − Σ m v(0) equals this up to round-off.
+    pub boundary_impulse: D::Vector,
+    kernel: K,
+    search: CellList,
+}
+
+impl<D: Dimension, K: Kernel> Simulation<D, K> {
+    /// Checks everything and prepares the run. `spacing0` is each particle's initial
+    /// spacing (for the artificial stress); pass `None` to take h/n_target.
+    pub fn new(
+        particles: Particles<D>,
+        materials: Vec<Material>,
+        scheme: SchemeConfig,
+        kernel: K,
+        boundaries: Vec<Boundary<D>>,
+        spacing0: Option<Vec<f64>>,
+    ) -> Result<Self, SolverError> {
+        scheme.validate()?;
+        particles.validate()?;
+        for (index, &m) in particles.material.iter().enumerate() {
+            if m as usize >= materials.len() {
+                return Err(SolverError::UnknownMaterial {
+                    index,
+                    material: m,
+                    count: materials.len(),
+                });
+            }
+        }
+        for b in &boundaries {
+            b.validate().map_err(|_| SolverError::BadConfig {
+                field: "boundary",
+                value: f64::NAN,
+                reason: "invalid boundary (see Boundary::validate)",
+            })?;
+        }
+        let n = particles.len();
+        let spacing0 = spacing0.unwrap_or_else(|| {
+            particles
+                .smoothing_length
+                .iter()
+                .map(|h| h / scheme.n_target)
+                .collect()
+        });
+        if spacing0.len() != n {
+            return Err(SolverError::BadState(sph_core::CoreError::LengthMismatch {
+                what: "spacing0",
+                expected: n,
+                got: spacing0.len(),
+            }));
+        }
+        let h_tensor = match scheme.smoothing {
+            SmoothingMode::Scalar => Vec::new(),
+            SmoothingMode::Asph { .. } => particles
+                .smoothing_length
+                .iter()
+                .map(|&h| D::Tensor::IDENTITY * (1.0 / h))
+                .collect(),
+        };
+        Ok(Self {
+            state: State {
+                particles,
+                h_tensor,
+                spacing0,
+                time: 0.0,
+                step: 0,
+            },
+            materials,
+            scheme,
+            boundaries,
+            timings: PhaseTimes::default(),
+            boundary_impulse: D::Vector::ZERO,
+            kernel,
+            search: CellList::new(),
+        })
+    }
+
+    /// Pressure and sound speed of every particle from its material's EOS.
+    pub fn pressure_and_sound_speed(&self) -> (Vec<f64>, Vec<f64>) {
+        eos_pass(&self.state.particles, &self.materials)
+    }
+
+    /// Mass, momentum and energy totals of the current state.
+    pub fn conserved(&self) -> Conserved<D> {
+        let p = &self.state.particles;
+        let mut c = Conserved {
+            mass: 0.0,
+            momentum: D::Vector::ZERO,
+            kinetic: 0.0,
+            internal: 0.0,
+        };
+        for i in 0..p.len() {
+            let m = p.mass[i];
+            c.mass += m;
+            c.momentum += p.velocity[i] * m;
+            c.kinetic += 0.5 * m * p.velocity[i].norm_squared();
+            c.internal += m * p.specific_energy[i];
+        }
+        c
+    }
+
+    /// Particle spacing Δx_i = (smallest support semi-axis)/n_target.
+    fn spacing(&self, state: &State<D>, i: usize) -> f64 {
+        let h_min = if state.h_tensor.is_empty() {
+            state.particles.smoothing_length[i]
+        } else {
+            1.0 / state.h_tensor[i].sym_eigen().values[D::DIM - 1]
+        };
+        h_min / self.scheme.n_target
+    }
+
+    /// Derivatives of `state`, and the neighbour list used.
+    fn stage(&mut self, state: &mut State<D>) -> Result<(Stage<D>, NeighborList), SolverError> {
+        let t0 = Instant::now();
+        let (mut pressure, mut sound_speed) = eos_pass(&state.particles, &self.materials);
+        let mut t1 = Instant::now();
+        let support: Vec<f64> = if state.h_tensor.is_empty() {
+            state.particles.smoothing_length.clone()
+        } else {
+            state
+                .h_tensor
+                .iter()
+                .map(|h| 1.0 / h.sym_eigen().values[0])
+                .collect()
+        };
+        let mut ext = Extended::build(state, &pressure, &sound_speed, &support, &self.boundaries);
+        let list = if ext.h_tensor.is_empty() {
+            self.search
+                .neighbors(&ext.position, &ScalarSupport::new(&ext.h)?)?
+        } else {
+            self.search
+                .neighbors(&ext.position, &TensorSupport::new(&ext.h_tensor)?)?
+        };
+        if self.scheme.density == DensityForm::Summation {
+            // Density from the positions, then the EOS again with it (real and ghosts).
+            let rho = if ext.h_tensor.is_empty() {
+                summation_density(
+                    &ext,
+                    &list,
+                    &ScalarPairKernel {
+                        kernel: self.kernel,
+                        h: &ext.h,
+                    },
+                )
+            } else {
+                summation_density(
+                    &ext,
+                    &list,
+                    &TensorPairKernel {
+                        kernel: self.kernel,
+                        h_tensor: &ext.h_tensor,
+                        h: &ext.h,
+                    },
+                )
+            };
+            state.particles.density = rho;
+            let t = Instant::now();
+            (pressure, sound_speed) = eos_pass(&state.particles, &self.materials);
+            t1 = t1 + t.elapsed();
+            for k in 0..ext.position.len() {
+                let s = ext.source[k] as usize;
+                ext.density[k] = state.particles.density[s];
+                ext.pressure[k] = pressure[s];
+                ext.sound_speed[k] = sound_speed[s];
+            }
+        }
+        let t2 = Instant::now();
+        let need_grads = self.scheme.limiter != sph_riemann::Limiter::None
+            || !state.h_tensor.is_empty()
+            || self.scheme.gradient_correction;
+        let correct = self.scheme.gradient_correction;
+        let (grads, rates_out, t3) = if ext.h_tensor.is_empty() {
+            let pk = ScalarPairKernel {
+                kernel: self.kernel,
+                h: &ext.h,
+            };
+            let g = need_grads.then(|| gradients(&ext, &list, &pk, correct));
+            let t3 = Instant::now();
+            let r = rates(&ext, &list, &pk, g.as_deref(), &self.scheme);
+            (g, r, t3)
+        } else {
+            let pk = TensorPairKernel {
+                kernel: self.kernel,
+                h_tensor: &ext.h_tensor,
+                h: &ext.h,
+            };
+            let g = need_grads.then(|| gradients(&ext, &list, &pk, correct));
+            let t3 = Instant::now();
+            let r = rates(&ext, &list, &pk, g.as_deref(), &self.scheme);
+            (g, r, t3)
+        };
+        let t4 = Instant::now();
+        self.timings.eos += (t1 - t0).as_secs_f64();
+        self.timings.neighbours += (t2 - t1).as_secs_f64();
+        self.timings.gradients += (t3 - t2).as_secs_f64();
+        self.timings.pairs += (t4 - t3).as_secs_f64();
+        self.timings.derivative_evaluations += ext.n_real as u64;
+        Ok((
+            Stage {
+                rates: rates_out,
+                grads,
+                sound_speed,
+            },
+            list,
+        ))
+    }
+
+    /// The smallest time-step vote of a stage.
+    fn vote(&self, state: &State<D>, stage: &Stage<D>) -> TimestepVote {
+        let p = &state.particles;
+        let mut best = TimestepVote {
+            dt: f64::INFINITY,
+            particle_id: 0,
+            reason: "none",
+        };
+        for i in 0..p.len() {
+            let dx = self.spacing(state, i);
+            let r = &stage.rates[i];
+            best = best.min(cfl_vote(
+                self.scheme.cfl,
+                dx,
+                stage.sound_speed[i],
+                r.approach,
+                p.id[i],
+            ));
+            best = best.min(acceleration_vote(self.scheme.cfl, dx, r.dv.norm(), p.id[i]));
+        }
+        best
+    }
+
+    /// One RK2 (midpoint) step, at most `max_dt` long.
+    pub fn step(&mut self, max_dt: f64) -> Result<StepInfo, SolverError> {
+        let mut s0_state = self.state.clone();
+        let (s0, _) = self.stage(&mut s0_state)?;
+        let vote = self.vote(&s0_state, &s0);
+        let dt = vote.dt.min(max_dt);
+        if !(dt > 0.0 && dt.is_finite()) {
+            return Err(SolverError::TimestepCollapse {
+                step: self.state.step,
+                dt,
+                min: 0.0,
+                id: vote.particle_id,
+                reason: vote.reason,
+            });
+        }
+        let t0 = Instant::now();
+        let mut half = s0_state.clone();
+        self.advance(&mut half, &s0_state, &s0, 0.5 * dt);
+        self.timings.integration += t0.elapsed().as_secs_f64();
+        let (s1, _) = self.stage(&mut half)?;
+        let t1 = Instant::now();
+        let mut next = s0_state;
+        // x_{n+1} = x_n + dt v_{1/2}; the other fields with the midpoint rates.
+        let v_half = half.particles.velocity.clone();
+        self.advance_with_velocity(&mut next, &v_half, &s1, dt, &half);
+        // The midpoint stage's ghost forces act over the whole step (v_{n+1} = v_n + dt a_½).
+        let m = &next.particles.mass;
+        let impulse = s1
+            .rates
+            .iter()
+            .zip(m)
+            .fold(D::Vector::ZERO, |acc, (r, &mi)| acc + r.dv_boundary * mi);
+        self.boundary_impulse += impulse * dt;
+        let mut corrections = 0;
+        for i in 0..next.particles.len() {
+            for b in &self.boundaries {
+                let before = next.particles.velocity[i];
+                let (x, v) = (
+                    &mut next.particles.position[i],
+                    &mut next.particles.velocity[i],
+                );
+                if b.enforce(x, v) {
+                    corrections += 1;
+                    self.boundary_impulse +=
+                        (next.particles.velocity[i] - before) * next.particles.mass[i];
+                }
+            }
+        }
+        next.time += dt;
+        next.step += 1;
+        self.check(&next)?;
+        self.state = next;
+        self.timings.integration += t1.elapsed().as_secs_f64();
+        Ok(StepInfo {
+            dt,
+            vote,
+            boundary_corrections: corrections,
+        })
+    }
+
+    /// y ← y0 + dt·f(stage), positions with the stage state's own velocities.
+    fn advance(&self, y: &mut State<D>, y0: &State<D>, stage: &Stage<D>, dt: f64) {
+        let v = y0.particles.velocity.clone();
+        self.advance_with_velocity(y, &v, stage, dt, y0);
+    }
+
+    fn advance_with_velocity(
+        &self,
+        y: &mut State<D>,
+        velocity: &[D::Vector],
+        stage: &Stage<D>,
+        dt: f64,
+        rate_state: &State<D>,
+    ) {
+        let p = &mut y.particles;
+        p.position
+            .par_iter_mut()
+            .zip(velocity)
+            .for_each(|(x, &v)| *x += v * dt);
+        p.velocity
+            .par_iter_mut()
+            .zip(&stage.rates)
+            .for_each(|(v, r)| *v += r.dv * dt);
+        p.density
+            .par_iter_mut()
+            .zip(&stage.rates)
+            .for_each(|(rho, r)| *rho += r.drho * dt);
+        p.specific_energy
+            .par_iter_mut()
+            .zip(&stage.rates)
+            .for_each(|(e, r)| *e += r.de * dt);
+        let d = D::DIM as f64;
+        let n_target = self.scheme.n_target;
+        match self.scheme.smoothing {
+            SmoothingMode::Scalar => {
+                let (m, rho) = (&p.mass, &p.density);
+                p.smoothing_length
+                    .par_iter_mut()
+                    .enumerate()
+                    .for_each(|(i, h)| {
+                        if rho[i] > 0.0 {
+                            *h = n_target * (m[i] / rho[i]).powf(1.0 / d);
+                        }
+                    });
+            }
+            SmoothingMode::Asph { max_aspect } => {
+                let grads = stage.grads.as_ref().expect("ASPH computes gradients");
+                let h_src = &rate_state.h_tensor;
+                let (m, rho) = (&p.mass, &p.density);
+                let new: Vec<(D::Tensor, f64)> = (0..p.len())
+                    .into_par_iter()
+                    .map(|i| {
+                        let target = if rho[i] > 0.0 {
+                            n_target * (m[i] / rho[i]).powf(1.0 / d)
+                        } else {
+                            1.0 / h_src[i].sym_eigen().values[0]
+                        };
+                        asph_update(&y.h_tensor[i], &grads[i].velocity, dt, target, max_aspect)
+                    })
+                    .collect();
+                for (i, (h, radius)) in new.into_iter().enumerate() {
+                    y.h_tensor[i] = h;
+                    p.smoothing_length[i] = radius;
+                }
+            }
+        }
+    }
+
+    /// With summation density, recomputes ρ (and h) from the current positions, so that
+    /// output reflects the final state; a no-op for the evolved density forms.
+    pub fn sync_density(&mut self) -> Result<(), SolverError> {
+        if self.scheme.density == DensityForm::Summation {
+            let mut s = self.state.clone();
+            self.stage(&mut s)?;
+            self.state.particles.density = s.particles.density;
+        }
+        Ok(())
+    }
+
+    /// Rejects non-finite or non-physical states, naming the particle.
+    fn check(&self, s: &State<D>) -> Result<(), SolverError> {
+        let p = &s.particles;
+        for i in 0..p.len() {
+            let bad = |what, value| SolverError::Unphysical {
+                step: s.step,
+                time: s.time,
+                id: p.id[i],
+                position: p.position[i].to_array3(),
+                what,
+                value,
+            };
+            if !p.position[i].all_finite() {
+                return Err(bad("position", f64::NAN));
+            }
+            if !p.velocity[i].all_finite() {
+                return Err(bad("velocity", f64::NAN));
+            }
+            if !(p.density[i] > 0.0 && p.density[i].is_finite()) {
+                return Err(bad("density", p.density[i]));
+            }
+            if !p.specific_energy[i].is_finite() {
+                return Err(bad("specific energy", p.specific_energy[i]));
+            }
+        }
+        Ok(())
+    }
+
+    /// Runs until `t_end` (the last step is shortened to land on it), calling
+    /// `on_step` after every step. Returns the number of steps taken.
+    pub fn run_until(
+        &mut self,
+        t_end: f64,
+        mut on_step: impl FnMut(&Self, &StepInfo),
+    ) -> Result<u64, SolverError> {
+        let mut steps = 0;
+        while self.state.time < t_end * (1.0 - 1e-14) {
+            let info = self.step(t_end - self.state.time)?;
+            steps += 1;
+            on_step(self, &info);
+        }
+        self.sync_density()?;
+        Ok(steps)
+    }
+
+    /// The kernel in use.
+    pub fn kernel(&self) -> &K {
+        &self.kernel
+    }
+}
+
+/// P and c of every particle.
+fn eos_pass<D: Dimension>(p: &Particles<D>, materials: &[Material]) -> (Vec<f64>, Vec<f64>) {
+    let pc: Vec<(f64, f64)> = (0..p.len())
+        .into_par_iter()
+        .map(|i| {
+            let pt = materials[p.material[i] as usize]
+                .eos
+                .evaluate(p.density[i], p.specific_energy[i]);
+            (pt.pressure, pt.sound_speed)
+        })
+        .collect();
+    pc.into_iter().unzip()
+}
+
+/// ASPH update of one H: advect the metric G = H² with L, take its square root, scale
+/// it to the target equivalent radius and limit its aspect ratio.
+fn asph_update<T: Tensor>(h: &T, l: &T, dt: f64, target_radius: f64, max_aspect: f64) -> (T, f64) {
+    let g = h.mul_tensor(h);
+    let dg = (l.transpose().mul_tensor(&g) + g.mul_tensor(l)) * (-dt);
+    let g_new = (g + dg).symmetric();
+    let eig = g_new.sym_eigen();
+    let n = T::Vector::DIM;
+    let mut lam: Vec<f64> = (0..n).map(|k| eig.values[k].max(0.0).sqrt()).collect();
+    // Limit the aspect: no semi-axis longer than max_aspect × the shortest.
+    let lmax = lam.iter().cloned().fold(0.0, f64::max);
+    if !(lmax > 0.0) {
+        return (T::IDENTITY * (1.0 / target_radius), target_radius);
+    }
+    for l in lam.iter_mut() {
+        *l = l.max(lmax / max_aspect);
+    }
+    // Scale to the target volume: Π λ_k = target^(−n).
+    let prod: f64 = lam.iter().product();
+    let scale = (target_radius.powi(-(n as i32)) / prod).powf(1.0 / n as f64);
+    let v = eig.vectors;
+    let h_new = T::from_fn(|a, b| {
+        (0..n)
+            .map(|k| v.component(a, k) * lam[k] * scale * v.component(b, k))
+            .sum()
+    });
+    let radius = equivalent_radius(&h_new);
+    (h_new, radius)
+}

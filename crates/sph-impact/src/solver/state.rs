@@ -1,0 +1,103 @@
+//! The evolved state and the per-stage scratch arrays.
+
+use crate::solver::boundary::{Boundary, Ghost};
+use sph_core::{Dimension, Particles, Tensor};
+
+/// What the integrator evolves: the particles (x, v, m, ρ, e, h, material, id), the
+/// ASPH tensors when in use, and the initial spacing (for the artificial stress).
+#[derive(Clone, Debug)]
+pub struct State<D: Dimension> {
+    /// Particle fields.
+    pub particles: Particles<D>,
+    /// ASPH smoothing tensors H (1/m), empty in scalar-h mode.
+    pub h_tensor: Vec<D::Tensor>,
+    /// Initial particle spacing Δp (m), per particle.
+    pub spacing0: Vec<f64>,
+    /// Simulated time (s).
+    pub time: f64,
+    /// Completed steps.
+    pub step: u64,
+}
+
+/// Real particles followed by ghosts, with everything a pair term reads.
+#[derive(Clone, Debug, Default)]
+pub(crate) struct Extended<D: Dimension> {
+    pub n_real: usize,
+    pub position: Vec<D::Vector>,
+    pub velocity: Vec<D::Vector>,
+    pub mass: Vec<f64>,
+    pub density: Vec<f64>,
+    pub pressure: Vec<f64>,
+    pub sound_speed: Vec<f64>,
+    pub h: Vec<f64>,
+    pub h_tensor: Vec<D::Tensor>,
+    pub spacing0: Vec<f64>,
+    pub material: Vec<u16>,
+    /// For ghosts: the real particle they copy (themselves for real particles).
+    pub source: Vec<u32>,
+    /// For ghosts: the map from the source's vectors to the ghost's (reflection or
+    /// identity); identity for real particles.
+    pub map: Vec<D::Tensor>,
+}
+
+impl<D: Dimension> Extended<D> {
+    /// Copies the real particles and appends the ghosts of every boundary, each
+    /// boundary seeing the real particles and the ghosts made before it (so corners
+    /// of two periodic axes are filled).
+    pub fn build(
+        state: &State<D>,
+        pressure: &[f64],
+        sound_speed: &[f64],
+        support: &[f64],
+        boundaries: &[Boundary<D>],
+    ) -> Self {
+        let p = &state.particles;
+        let n = p.len();
+        let mut ext = Extended {
+            n_real: n,
+            position: p.position.clone(),
+            velocity: p.velocity.clone(),
+            mass: p.mass.clone(),
+            density: p.density.clone(),
+            pressure: pressure.to_vec(),
+            sound_speed: sound_speed.to_vec(),
+            h: p.smoothing_length.clone(),
+            h_tensor: state.h_tensor.clone(),
+            spacing0: state.spacing0.clone(),
+            material: p.material.clone(),
+            source: (0..n as u32).collect(),
+            map: vec![D::Tensor::IDENTITY; n],
+        };
+        let mut radius = support.to_vec();
+        let mut ghosts: Vec<Ghost<D>> = Vec::new();
+        for b in boundaries {
+            ghosts.clear();
+            b.ghosts(&ext.position, &radius, &mut ghosts);
+            for g in &ghosts {
+                let s = g.source;
+                ext.position.push(g.position);
+                ext.velocity.push(g.map.mul_vec(ext.velocity[s]));
+                ext.mass.push(ext.mass[s]);
+                ext.density.push(ext.density[s]);
+                ext.pressure.push(ext.pressure[s]);
+                ext.sound_speed.push(ext.sound_speed[s]);
+                ext.h.push(ext.h[s]);
+                if !ext.h_tensor.is_empty() {
+                    // H maps as a quadratic form: H' = M H Mᵀ for an orthogonal map M.
+                    let hm = g
+                        .map
+                        .mul_tensor(&ext.h_tensor[s])
+                        .mul_tensor(&g.map.transpose());
+                    ext.h_tensor.push(hm);
+                }
+                ext.spacing0.push(ext.spacing0[s]);
+                ext.material.push(ext.material[s]);
+                ext.source.push(ext.source[s]);
+                let composed = g.map.mul_tensor(&ext.map[s]);
+                ext.map.push(composed);
+                radius.push(radius[s]);
+            }
+        }
+        ext
+    }
+}

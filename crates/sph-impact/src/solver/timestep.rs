@@ -1,0 +1,57 @@
+//! Time-step votes: each limit names the particle that set it and why (Spheral's
+//! physics packages each return a vote with a reason; so does each limit here).
+
+use serde::Serialize;
+
+/// One candidate time step.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct TimestepVote {
+    /// The step (s).
+    pub dt: f64,
+    /// Stable id of the particle that set it.
+    pub particle_id: u64,
+    /// Why.
+    pub reason: &'static str,
+}
+
+impl TimestepVote {
+    /// The smaller of two votes (ties keep `self`, so the choice is deterministic).
+    pub fn min(self, other: TimestepVote) -> TimestepVote {
+        if other.dt < self.dt { other } else { self }
+    }
+}
+
+/// The CFL vote of a particle: λ Δx / (c + w), Δx = h/n_target its spacing, w its
+/// largest approach speed (paper §2.5).
+pub fn cfl_vote(
+    cfl: f64,
+    spacing: f64,
+    sound_speed: f64,
+    approach: f64,
+    particle_id: u64,
+) -> TimestepVote {
+    TimestepVote {
+        dt: cfl * spacing / (sound_speed + approach).max(f64::MIN_POSITIVE),
+        particle_id,
+        reason: "CFL: sound + approach speed",
+    }
+}
+
+/// The acceleration vote: λ sqrt(Δx/|a|).
+pub fn acceleration_vote(
+    cfl: f64,
+    spacing: f64,
+    acceleration: f64,
+    particle_id: u64,
+) -> TimestepVote {
+    let dt = if acceleration > 0.0 {
+        cfl * (spacing / acceleration).sqrt()
+    } else {
+        f64::INFINITY
+    };
+    TimestepVote {
+        dt,
+        particle_id,
+        reason: "acceleration",
+    }
+}

@@ -1,0 +1,140 @@
+//! The verification suite (verification.md): each problem sets up, runs, and compares
+//! with its exact solution, returning metrics and a per-particle profile.
+//!
+//! Run one with `sph-impact verify NAME [--resolution N] [--out DIR] [--json]`.
+
+mod noh;
+mod outcome;
+mod radial;
+mod sedov;
+mod setup;
+mod shock_tube;
+
+pub use outcome::{Outcome, Profile};
+
+use std::str::FromStr;
+
+/// A verification problem.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Problem {
+    /// Sod's shock tube, γ = 1.4, t = 0.2 (verification.md §1).
+    Sod,
+    /// Toro's test 2 ("123"), near vacuum, t = 0.15.
+    Toro123,
+    /// Toro's test 3, pressure ratio 1e5, t = 0.012.
+    Toro3,
+    /// Planar Noh, γ = 5/3, t = 0.6 (verification.md §2).
+    NohPlanar,
+    /// Cylindrical Noh in 2-D.
+    NohCylindrical,
+    /// Spherical Noh in 3-D.
+    NohSpherical,
+    /// Cylindrical Sedov–Taylor blast in 2-D, γ = 5/3 (verification.md §3).
+    Sedov2d,
+    /// Spherical Sedov–Taylor blast in 3-D, γ = 5/3.
+    Sedov3d,
+}
+
+impl Problem {
+    /// All problems, in documentation order.
+    pub const ALL: [Problem; 8] = [
+        Problem::Sod,
+        Problem::Toro123,
+        Problem::Toro3,
+        Problem::NohPlanar,
+        Problem::NohCylindrical,
+        Problem::NohSpherical,
+        Problem::Sedov2d,
+        Problem::Sedov3d,
+    ];
+
+    /// The command-line name.
+    pub fn name(&self) -> &'static str {
+        match self {
+            Problem::Sod => "sod",
+            Problem::Toro123 => "toro123",
+            Problem::Toro3 => "toro3",
+            Problem::NohPlanar => "noh-planar",
+            Problem::NohCylindrical => "noh-cylindrical",
+            Problem::NohSpherical => "noh-spherical",
+            Problem::Sedov2d => "sedov-2d",
+            Problem::Sedov3d => "sedov-3d",
+        }
+    }
+
+    /// What `--resolution` means for this problem, and its default.
+    pub fn resolution_doc(&self) -> (&'static str, usize) {
+        match self {
+            Problem::Sod => (
+                "particles in the left state (the right has 1/8 as many)",
+                400,
+            ),
+            Problem::Toro123 | Problem::Toro3 => ("particles across [0, 1]", 400),
+            Problem::NohPlanar => ("particles across [0, 1]", 100),
+            Problem::NohCylindrical => ("particles across the radius 1", 100),
+            Problem::NohSpherical => ("particles across the radius 1", 30),
+            Problem::Sedov2d => ("particles across [-1, 1]", 200),
+            Problem::Sedov3d => ("particles across [-1, 1]", 40),
+        }
+    }
+
+    /// The scheme a problem runs with unless overridden: the study's defaults, except
+    /// n_target = 4 in 1-D. With the study's 2.5 (5 neighbours in 1-D) the
+    /// zeroth-order SPH error leaves Sod's star state 4–10 % off at any resolution; the
+    /// scan is in docs/verification.md.
+    pub fn default_scheme(&self) -> crate::SchemeConfig {
+        let mut s = crate::SchemeConfig::default();
+        if matches!(
+            self,
+            Problem::Sod | Problem::Toro123 | Problem::Toro3 | Problem::NohPlanar
+        ) {
+            s.n_target = 4.0;
+        }
+        s
+    }
+
+    /// Runs the problem at `resolution` (None: the default) with its default scheme.
+    pub fn run(&self, resolution: Option<usize>) -> Result<Outcome, crate::SolverError> {
+        self.run_with(resolution, self.default_scheme())
+    }
+
+    /// Runs the problem at `resolution` with the given scheme.
+    pub fn run_with(
+        &self,
+        resolution: Option<usize>,
+        scheme: crate::SchemeConfig,
+    ) -> Result<Outcome, crate::SolverError> {
+        scheme.validate()?;
+        let n = resolution.unwrap_or(self.resolution_doc().1);
+        if n < 4 {
+            return Err(crate::SolverError::BadConfig {
+                field: "resolution",
+                value: n as f64,
+                reason: "must be at least 4",
+            });
+        }
+        match self {
+            Problem::Sod => shock_tube::run(shock_tube::Tube::Sod, n, scheme),
+            Problem::Toro123 => shock_tube::run(shock_tube::Tube::Toro123, n, scheme),
+            Problem::Toro3 => shock_tube::run(shock_tube::Tube::Toro3, n, scheme),
+            Problem::NohPlanar => noh::run_planar(n, scheme),
+            Problem::NohCylindrical => noh::run_cylindrical(n, scheme),
+            Problem::NohSpherical => noh::run_spherical(n, scheme),
+            Problem::Sedov2d => sedov::run_2d(n, scheme),
+            Problem::Sedov3d => sedov::run_3d(n, scheme),
+        }
+    }
+}
+
+impl FromStr for Problem {
+    type Err = String;
+    fn from_str(s: &str) -> Result<Self, String> {
+        Problem::ALL
+            .into_iter()
+            .find(|p| p.name() == s)
+            .ok_or_else(|| {
+                let names: Vec<&str> = Problem::ALL.iter().map(|p| p.name()).collect();
+                format!("unknown problem '{s}' (known: {})", names.join(", "))
+            })
+    }
+}

@@ -1,0 +1,190 @@
+//! Noh implosions (verification.md §2): γ = 5/3, ρ0 = 1, inflow speed 1, P0 = 1e-6,
+//! t = 0.6; exact shock at r = 0.2.
+//!
+//! * planar: 1-D, particles on [0, 1], reflecting wall at x = 0, free far end;
+//! * cylindrical / spherical: cubic lattice filling the disc / ball of radius 1 (no
+//!   particle at the centre), free outer surface.
+//!
+//! Norms over r ∈ [0.05, 0.35] (the window excludes the wall-heating zone), weights
+//! m/ρ; shock where the density crosses (ρ_pre + ρ2)/2; wall heating reported as the
+//! innermost particles' ρ/ρ2 and e/0.5.
+
+use super::outcome::{Outcome, Profile};
+use super::radial::{RADIAL_COLUMNS, Radial};
+use super::setup::{gas, last_crossing, particle, simulation};
+use crate::{Boundary, SchemeConfig, Simulation, SolverError};
+use sph_core::{Dim1, Dim2, Dim3, Dimension, Particles, Vector};
+use sph_diagnostics::error_norms;
+use sph_diagnostics::exact::Noh;
+use sph_geometry::{Sphere, cubic_lattice};
+use sph_kernel::KernelChoice;
+
+const GAMMA: f64 = 5.0 / 3.0;
+const T_END: f64 = 0.6;
+const P0: f64 = 1e-6;
+
+fn exact(dim: u32) -> Result<Noh, SolverError> {
+    Noh::new(dim, GAMMA, 1.0, 1.0).map_err(|e| SolverError::Material(e.to_string()))
+}
+
+/// Planar Noh with `n` particles across [0, 1].
+pub(crate) fn run_planar(n: usize, scheme: SchemeConfig) -> Result<Outcome, SolverError> {
+    let dx = 1.0 / n as f64;
+    let mut p = Particles::<Dim1>::new();
+    for k in 0..n {
+        p.push(particle(
+            (k as f64 + 0.5) * dx,
+            -1.0,
+            dx,
+            1.0,
+            P0,
+            GAMMA,
+            scheme.n_target * dx,
+        ));
+    }
+    let sim = simulation(
+        p,
+        gas(GAMMA)?,
+        scheme,
+        vec![Boundary::Wall {
+            point: 0.0,
+            normal: 1.0,
+        }],
+        None,
+    )?;
+    finish("noh-planar", 1, n, dx, sim)
+}
+
+/// Cylindrical Noh with `n` lattice spacings across the radius.
+pub(crate) fn run_cylindrical(n: usize, scheme: SchemeConfig) -> Result<Outcome, SolverError> {
+    run_radial::<Dim2>("noh-cylindrical", n, scheme)
+}
+
+/// Spherical Noh with `n` lattice spacings across the radius.
+pub(crate) fn run_spherical(n: usize, scheme: SchemeConfig) -> Result<Outcome, SolverError> {
+    run_radial::<Dim3>("noh-spherical", n, scheme)
+}
+
+fn run_radial<D: Dimension>(
+    name: &str,
+    n: usize,
+    scheme: SchemeConfig,
+) -> Result<Outcome, SolverError> {
+    let dx = 1.0 / n as f64;
+    let ball =
+        Sphere::new(D::Vector::ZERO, 1.0).map_err(|e| SolverError::Material(e.to_string()))?;
+    let body = cubic_lattice(&ball, dx, 1.0).map_err(|e| SolverError::Material(e.to_string()))?;
+    let mut p = Particles::<D>::new();
+    for (x, m) in body.positions.iter().zip(&body.masses) {
+        let v = *x * (-1.0 / x.norm());
+        p.push(particle(*x, v, *m, 1.0, P0, GAMMA, scheme.n_target * dx));
+    }
+    let sim = simulation(p, gas(GAMMA)?, scheme, Vec::new(), None)?;
+    finish(name, D::DIM as u32, n, dx, sim)
+}
+
+fn finish<D: Dimension>(
+    name: &str,
+    dim: u32,
+    n: usize,
+    dx: f64,
+    mut sim: Simulation<D, KernelChoice>,
+) -> Result<Outcome, SolverError> {
+    let c0 = sim.conserved();
+    let wall = std::time::Instant::now();
+    let steps = sim.run_until(T_END, |_, _| {})?;
+    let wall = wall.elapsed().as_secs_f64();
+    let c1 = sim.conserved();
+    let noh = exact(dim)?;
+    let rad = Radial::of(&sim);
+    let ex: Vec<_> = rad.r.iter().map(|&r| noh.state(r, T_END)).collect();
+    let ex_cols: Vec<(f64, f64, f64, f64)> = ex
+        .iter()
+        .map(|s| (s.density, s.velocity, s.pressure, s.specific_energy))
+        .collect();
+
+    let mut out = Outcome {
+        problem: name.to_string(),
+        ..Default::default()
+    };
+    out.set("particles", sim.state.particles.len() as f64);
+    out.set("resolution", n as f64);
+    out.set("t_end", T_END);
+    out.set("steps", steps as f64);
+    out.set("wall_time_s", wall);
+    let window = |k: usize| rad.r[k] >= 0.05 && rad.r[k] <= 0.35;
+    let fields: [(&str, &Vec<f64>, Vec<f64>); 4] = [
+        ("rho", &rad.rho, ex.iter().map(|s| s.density).collect()),
+        ("v", &rad.vr, ex.iter().map(|s| s.velocity).collect()),
+        ("p", &rad.p, ex.iter().map(|s| s.pressure).collect()),
+        ("e", &rad.e, ex.iter().map(|s| s.specific_energy).collect()),
+    ];
+    for (f, num, exv) in fields {
+        let nrm = error_norms(num, &exv, &rad.w, window);
+        out.set(&format!("l1_{f}"), nrm.l1);
+        out.set(&format!("linf_{f}"), nrm.linf);
+    }
+    // Shock: the outermost crossing of the mid density, on radially binned data in 2-D/3-D.
+    let rho2 = noh.post_shock_density();
+    let r_s = noh.shock_radius(T_END);
+    let pre = noh.state(r_s * (1.0 + 1e-9), T_END).density;
+    let level = 0.5 * (pre + rho2);
+    let (rb, db) = if dim == 1 {
+        (rad.r.clone(), rad.rho.clone())
+    } else {
+        rad.binned_density(dx)
+    };
+    if let Some(xs) = last_crossing(&rb, &db, level) {
+        out.set("shock_position", xs);
+        out.set("shock_position_exact", r_s);
+        // Local spacing at the crossing: (m/ρ)^(1/d) at the mid density.
+        let m_mean = sim.state.particles.total_mass() / sim.state.particles.len() as f64;
+        out.set(
+            "shock_error_in_spacings",
+            (xs - r_s) / (m_mean / level).powf(1.0 / dim as f64),
+        );
+    }
+    // Wall heating: the innermost particles (r < 1.5 initial spacings... at least 1).
+    let inner: Vec<usize> = (0..rad.r.len()).filter(|&k| rad.r[k] < 0.05).collect();
+    let inner = if inner.is_empty() { vec![0] } else { inner };
+    let mean = |v: &Vec<f64>| inner.iter().map(|&k| v[k]).sum::<f64>() / inner.len() as f64;
+    out.set("centre_density_over_rho2", mean(&rad.rho) / rho2);
+    out.set("centre_energy_over_half", mean(&rad.e) / 0.5);
+    out.set(
+        "energy_change_relative",
+        (c1.energy() - c0.energy()) / c0.energy(),
+    );
+    // Momentum balance: change minus what the boundaries delivered, relative to Σ m|v|.
+    let scale = c0.mass;
+    out.set(
+        "momentum_balance_relative",
+        (c1.momentum - c0.momentum - sim.boundary_impulse).norm() / scale,
+    );
+    out.profile = Profile {
+        columns: RADIAL_COLUMNS.map(String::from).to_vec(),
+        rows: rad.rows(&ex_cols),
+    };
+    let dense: Vec<f64> = (1..=1000).map(|k| k as f64 / 1000.0).collect();
+    out.exact.push((
+        "rho".into(),
+        dense
+            .iter()
+            .map(|&r| (r, noh.state(r, T_END).density))
+            .collect(),
+    ));
+    out.exact.push((
+        "v".into(),
+        dense
+            .iter()
+            .map(|&r| (r, noh.state(r, T_END).velocity))
+            .collect(),
+    ));
+    out.exact.push((
+        "p".into(),
+        dense
+            .iter()
+            .map(|&r| (r, noh.state(r, T_END).pressure))
+            .collect(),
+    ));
+    Ok(out)
+}

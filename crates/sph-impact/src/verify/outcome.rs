@@ -1,0 +1,61 @@
+//! The result of a verification run.
+
+use serde::Serialize;
+use serde_json::{Map, Value};
+
+/// One row per particle at the end time, with named columns.
+#[derive(Clone, Debug, Default, Serialize)]
+pub struct Profile {
+    /// Column names (the first is the coordinate: `x` or `r`).
+    pub columns: Vec<String>,
+    /// Rows, one per particle, sorted by the coordinate.
+    pub rows: Vec<Vec<f64>>,
+}
+
+impl Profile {
+    /// The profile as CSV text with a header line.
+    pub fn to_csv(&self) -> String {
+        let mut s = self.columns.join(",");
+        s.push('\n');
+        for r in &self.rows {
+            let cells: Vec<String> = r.iter().map(|v| format!("{v:.9e}")).collect();
+            s.push_str(&cells.join(","));
+            s.push('\n');
+        }
+        s
+    }
+
+    /// The values of one column.
+    pub fn column(&self, name: &str) -> Option<Vec<f64>> {
+        let k = self.columns.iter().position(|c| c == name)?;
+        Some(self.rows.iter().map(|r| r[k]).collect())
+    }
+}
+
+/// Metrics, the profile, and exact curves for plotting.
+#[derive(Clone, Debug, Default, Serialize)]
+pub struct Outcome {
+    /// Problem name.
+    pub problem: String,
+    /// Named metrics (error norms, star states, shock positions, conservation...).
+    pub metrics: Map<String, Value>,
+    /// End-time particle profile.
+    #[serde(skip)]
+    pub profile: Profile,
+    /// Exact solution sampled densely: (coordinate, field name, value) curves for the
+    /// plot, as (field, points).
+    #[serde(skip)]
+    pub exact: Vec<(String, Vec<(f64, f64)>)>,
+}
+
+impl Outcome {
+    /// Records a metric.
+    pub fn set(&mut self, key: &str, value: impl Into<Value>) {
+        self.metrics.insert(key.to_string(), value.into());
+    }
+
+    /// A numeric metric, if present.
+    pub fn get(&self, key: &str) -> Option<f64> {
+        self.metrics.get(key).and_then(Value::as_f64)
+    }
+}

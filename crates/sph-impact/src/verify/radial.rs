@@ -1,0 +1,90 @@
+//! Radial profiles of 2-D/3-D runs: per-particle values against r, and binned means.
+
+use crate::Simulation;
+use sph_core::{Dimension, Vector};
+use sph_kernel::Kernel;
+
+/// Per-particle radial data, sorted by r.
+pub(crate) struct Radial {
+    pub r: Vec<f64>,
+    pub rho: Vec<f64>,
+    pub vr: Vec<f64>,
+    pub p: Vec<f64>,
+    pub e: Vec<f64>,
+    /// Particle volume m/ρ (the norm weight).
+    pub w: Vec<f64>,
+}
+
+impl Radial {
+    /// Collects the radial profile about the origin.
+    pub fn of<D: Dimension, K: Kernel>(sim: &Simulation<D, K>) -> Self {
+        let (pr, _) = sim.pressure_and_sound_speed();
+        let pa = &sim.state.particles;
+        let mut idx: Vec<usize> = (0..pa.len()).collect();
+        let r_of = |i: usize| pa.position[i].norm();
+        idx.sort_by(|&a, &b| r_of(a).total_cmp(&r_of(b)));
+        let vr = |i: usize| {
+            let r = r_of(i);
+            if r > 0.0 {
+                pa.velocity[i].dot(pa.position[i]) / r
+            } else {
+                0.0
+            }
+        };
+        Radial {
+            r: idx.iter().map(|&i| r_of(i)).collect(),
+            rho: idx.iter().map(|&i| pa.density[i]).collect(),
+            vr: idx.iter().map(|&i| vr(i)).collect(),
+            p: idx.iter().map(|&i| pr[i]).collect(),
+            e: idx.iter().map(|&i| pa.specific_energy[i]).collect(),
+            w: idx.iter().map(|&i| pa.mass[i] / pa.density[i]).collect(),
+        }
+    }
+
+    /// Mean density in radial bins of width `dr`: (bin centre, mean) for non-empty bins.
+    pub fn binned_density(&self, dr: f64) -> (Vec<f64>, Vec<f64>) {
+        let nb = (self.r.last().copied().unwrap_or(0.0) / dr).ceil() as usize + 1;
+        let (mut s, mut c) = (vec![0.0; nb], vec![0usize; nb]);
+        for (r, rho) in self.r.iter().zip(&self.rho) {
+            let b = (r / dr) as usize;
+            s[b] += rho;
+            c[b] += 1;
+        }
+        (0..nb)
+            .filter(|&b| c[b] > 0)
+            .map(|b| ((b as f64 + 0.5) * dr, s[b] / c[b] as f64))
+            .unzip()
+    }
+
+    /// The profile as rows (r, rho, vr, p, e, and the exact columns given).
+    pub fn rows(&self, exact: &[(f64, f64, f64, f64)]) -> Vec<Vec<f64>> {
+        (0..self.r.len())
+            .map(|k| {
+                vec![
+                    self.r[k],
+                    self.rho[k],
+                    self.vr[k],
+                    self.p[k],
+                    self.e[k],
+                    exact[k].0,
+                    exact[k].1,
+                    exact[k].2,
+                    exact[k].3,
+                ]
+            })
+            .collect()
+    }
+}
+
+/// Column names matching [`Radial::rows`].
+pub(crate) const RADIAL_COLUMNS: [&str; 9] = [
+    "r",
+    "rho",
+    "vr",
+    "p",
+    "e",
+    "rho_exact",
+    "vr_exact",
+    "p_exact",
+    "e_exact",
+];
