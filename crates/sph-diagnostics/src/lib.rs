@@ -21,6 +21,8 @@
 pub mod error;
 pub mod exact;
 pub mod norms;
+pub mod plot;
 
 pub use error::ExactError;
 pub use norms::{ErrorNorms, convergence_order, error_norms, log_log_slope};
+pub use plot::{Figure, PlotError};

@@ -12,6 +12,7 @@
 //! None.
 
 pub mod cli;
+pub mod materials;
 pub mod plot;
 pub mod solver;
 pub mod verify;

@@ -29,6 +29,8 @@ pub(crate) struct Gradients<D: Dimension> {
     pub pressure: D::Vector,
     /// M_i⁻ᵀ, the linear gradient correction (identity when off or singular).
     pub correction: D::Tensor,
+    /// The grad-h factor Ω_i = 1 + h_i/(dρ_i) Σ_j m_j ∂W(r_ij, h_i)/∂h.
+    pub omega: f64,
 }
 
 /// Per-particle time derivatives and time-step ingredients (pass 2).
@@ -77,6 +79,10 @@ pub(crate) fn gradients<D: Dimension, P: PairKernel<D>>(
             let mut l = D::Tensor::ZERO;
             let mut gp = D::Vector::ZERO;
             let mut m = D::Tensor::ZERO;
+            let d = D::DIM as f64;
+            let hi = pk.h(i);
+            // Self term of Σ m ∂W/∂h: ∂W(0,h)/∂h = −d W(0,h)/h.
+            let mut dwdh = -d * ext.mass[i] * pk.w(i, i, D::Vector::ZERO) / hi;
             for &j in list.neighbors(i) {
                 let j = j as usize;
                 let dx = ext.position[j] - xi;
@@ -85,7 +91,9 @@ pub(crate) fn gradients<D: Dimension, P: PairKernel<D>>(
                 l += D::Tensor::outer(ext.velocity[j] - vi, g) * vol;
                 gp += g * ((ext.pressure[j] - pi) * vol);
                 m += D::Tensor::outer(dx, g) * vol;
+                dwdh += ext.mass[j] * pk.dw_dh_own(i, dx);
             }
+            let omega = 1.0 + hi / (d * ext.density[i]) * dwdh;
             // L = L_raw M⁻¹ and ∇P = M⁻ᵀ ∇P_raw are exact for linear fields. A nearly
             // singular M (a particle with too few neighbours) keeps the raw estimates.
             let inv = if correct {
@@ -98,11 +106,13 @@ pub(crate) fn gradients<D: Dimension, P: PairKernel<D>>(
                     velocity: l.mul_tensor(&mi),
                     pressure: mi.transpose().mul_vec(gp),
                     correction: mi.transpose(),
+                    omega,
                 },
                 None => Gradients {
                     velocity: l,
                     pressure: gp,
                     correction: D::Tensor::IDENTITY,
+                    omega,
                 },
             }
         })
@@ -269,6 +279,16 @@ pub(crate) fn rates<D: Dimension, P: PairKernel<D>>(
                         mj * (2.0 * pi / (rhoi * rhoj) * dvs + 0.5 * (pi_ij + a_ij) * vij.dot(g))
                     }
                 };
+            }
+            // The grad-h factor makes the continuity equation the time derivative of the
+            // summation density with h ∝ ρ^(−1/d) (Springel & Hernquist 2002; Price
+            // 2012, eq. 39); without it the density drifts wherever h changes fast, as
+            // across a strong shock. Ω is clamped to [0.5, 2] (far from its usual ≈ 1 only
+            // for particles that have lost most neighbours).
+            if scheme.grad_h
+                && let Some(gr) = grads
+            {
+                out.drho /= gr[i].omega.clamp(0.5, 2.0);
             }
             out
         })

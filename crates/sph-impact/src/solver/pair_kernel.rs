@@ -13,6 +13,8 @@ pub(crate) trait PairKernel<D: Dimension>: Sync {
     fn grad(&self, i: usize, j: usize, r: D::Vector) -> D::Vector;
     /// A scalar support radius of particle i (for viscosity lengths and spacings).
     fn h(&self, i: usize) -> f64;
+    /// ∂W(r, h_i)/∂h with particle i's own support (for the grad-h factor).
+    fn dw_dh_own(&self, i: usize, r: D::Vector) -> f64;
     /// W̄ at distance `d` along the pair axis `r_hat` (artificial-stress normaliser).
     fn w_at(&self, i: usize, j: usize, r_hat: D::Vector, d: f64) -> f64 {
         self.w(i, j, r_hat * d)
@@ -38,6 +40,15 @@ impl<D: Dimension, K: Kernel> PairKernel<D> for ScalarPairKernel<'_, K> {
     fn h(&self, i: usize) -> f64 {
         self.h[i]
     }
+    #[inline]
+    fn dw_dh_own(&self, i: usize, r: D::Vector) -> f64 {
+        // W = σ h^(−d) f(r/h): ∂W/∂h = −σ h^(−d−1) (d f + q f').
+        let h = self.h[i];
+        let q = r.norm() / h;
+        let d = D::DIM as f64;
+        -self.kernel.sigma(D::DIM) / h.powi(D::DIM as i32 + 1)
+            * (d * self.kernel.f(q) + q * self.kernel.df(q))
+    }
 }
 
 /// ASPH tensors, with `h` the geometric-mean support radius det(H)^(−1/d).
@@ -62,6 +73,14 @@ impl<D: Dimension, K: Kernel> PairKernel<D> for TensorPairKernel<'_, K, D::Tenso
     #[inline]
     fn h(&self, i: usize) -> f64 {
         self.h[i]
+    }
+    #[inline]
+    fn dw_dh_own(&self, i: usize, r: D::Vector) -> f64 {
+        // H scaled uniformly as H/s: the scalar formula with η = |H r|, h = det(H)^(−1/d).
+        let eta = self.h_tensor[i].mul_vec(r).norm();
+        let d = D::DIM as f64;
+        let w = self.kernel.sigma(D::DIM) * self.h_tensor[i].determinant();
+        -w / self.h[i] * (d * self.kernel.f(eta) + eta * self.kernel.df(eta))
     }
 }
 

@@ -8,7 +8,7 @@ use crate::solver::error::SolverError;
 use crate::solver::material::Material;
 use crate::solver::pair_kernel::{ScalarPairKernel, TensorPairKernel, equivalent_radius};
 use crate::solver::state::{Extended, State};
-use crate::solver::timestep::{TimestepVote, acceleration_vote, cfl_vote};
+use crate::solver::timestep::{TimestepVote, acceleration_vote, cfl_vote, density_vote};
 use rayon::prelude::*;
 use serde::Serialize;
 use sph_core::{
@@ -261,7 +261,8 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
         let t2 = Instant::now();
         let need_grads = self.scheme.limiter != sph_riemann::Limiter::None
             || !state.h_tensor.is_empty()
-            || self.scheme.gradient_correction;
+            || self.scheme.gradient_correction
+            || self.scheme.grad_h;
         let correct = self.scheme.gradient_correction;
         let (grads, rates_out, t3) = if ext.h_tensor.is_empty() {
             let pk = ScalarPairKernel {
@@ -310,6 +311,7 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
         for i in 0..p.len() {
             let dx = self.spacing(state, i);
             let r = &stage.rates[i];
+            best = best.min(density_vote(self.scheme.cfl, p.density[i], r.drho, p.id[i]));
             best = best.min(cfl_vote(
                 self.scheme.cfl,
                 dx,
@@ -405,10 +407,14 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
             .par_iter_mut()
             .zip(&stage.rates)
             .for_each(|(v, r)| *v += r.dv * dt);
+        // ρ ← ρ exp(dt (dρ/dt)/ρ_rate): first-order equal to the linear update, but a
+        // density can never change sign, however violent the expansion.
+        let rho_rate = &rate_state.particles.density;
         p.density
             .par_iter_mut()
             .zip(&stage.rates)
-            .for_each(|(rho, r)| *rho += r.drho * dt);
+            .zip(rho_rate)
+            .for_each(|((rho, r), &rr)| *rho *= (r.drho * dt / rr).exp());
         p.specific_energy
             .par_iter_mut()
             .zip(&stage.rates)
@@ -418,12 +424,14 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
         match self.scheme.smoothing {
             SmoothingMode::Scalar => {
                 let (m, rho) = (&p.mass, &p.density);
+                let (s0, cap) = (&y.spacing0, self.scheme.h_max_factor);
                 p.smoothing_length
                     .par_iter_mut()
                     .enumerate()
                     .for_each(|(i, h)| {
                         if rho[i] > 0.0 {
-                            *h = n_target * (m[i] / rho[i]).powf(1.0 / d);
+                            *h = (n_target * (m[i] / rho[i]).powf(1.0 / d))
+                                .min(cap * n_target * s0[i]);
                         }
                     });
             }

@@ -37,6 +37,21 @@ pub fn cfl_vote(
     }
 }
 
+/// The density vote: λ ρ/|dρ/dt|, so no step changes a density by more than the
+/// fraction λ (a strong expansion would otherwise drive ρ negative).
+pub fn density_vote(cfl: f64, density: f64, rate: f64, particle_id: u64) -> TimestepVote {
+    let dt = if rate != 0.0 {
+        cfl * density / rate.abs()
+    } else {
+        f64::INFINITY
+    };
+    TimestepVote {
+        dt,
+        particle_id,
+        reason: "density change",
+    }
+}
+
 /// The acceleration vote: λ sqrt(Δx/|a|).
 pub fn acceleration_vote(
     cfl: f64,
