@@ -250,7 +250,7 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
             state.particles.density = rho;
             let t = Instant::now();
             (pressure, sound_speed) = eos_pass(&state.particles, &self.materials);
-            t1 = t1 + t.elapsed();
+            t1 += t.elapsed();
             for k in 0..ext.position.len() {
                 let s = ext.source[k] as usize;
                 ext.density[k] = state.particles.density[s];
