@@ -173,7 +173,7 @@ pub(crate) fn rates<D: Dimension, P: PairKernel<D>>(
                     continue;
                 }
                 let r_hat = r / dist;
-                let g = pk.grad(i, j, r);
+                let g = pk.grad_at(i, j, r, dist);
                 let (vj, rhoj, pj, cj, mj) = (
                     ext.velocity[j],
                     ext.density[j],

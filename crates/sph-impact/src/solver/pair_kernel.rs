@@ -11,6 +11,11 @@ pub(crate) trait PairKernel<D: Dimension>: Sync {
     fn w(&self, i: usize, j: usize, r: D::Vector) -> f64;
     /// ∇_i W̄.
     fn grad(&self, i: usize, j: usize, r: D::Vector) -> D::Vector;
+    /// ∇_i W̄ when |r| is already known.
+    fn grad_at(&self, i: usize, j: usize, r: D::Vector, dist: f64) -> D::Vector {
+        let _ = dist;
+        self.grad(i, j, r)
+    }
     /// A scalar support radius of particle i (for viscosity lengths and spacings).
     fn h(&self, i: usize) -> f64;
     /// ∂W(r, h_i)/∂h with particle i's own support (for the grad-h factor).
@@ -21,20 +26,55 @@ pub(crate) trait PairKernel<D: Dimension>: Sync {
     }
 }
 
-/// Scalar support radii.
+/// Scalar support radii, with the per-particle factors 1/h, σ/h^d and σ/h^(d+1)
+/// computed once per stage (the pair loop then needs one square root per pair).
 pub(crate) struct ScalarPairKernel<'a, K> {
     pub kernel: K,
     pub h: &'a [f64],
+    inv_h: Vec<f64>,
+    w_norm: Vec<f64>,
+    g_norm: Vec<f64>,
+}
+
+impl<'a, K: Kernel> ScalarPairKernel<'a, K> {
+    /// Precomputes the factors for `dim` dimensions.
+    pub fn new(kernel: K, h: &'a [f64], dim: usize) -> Self {
+        let sigma = kernel.sigma(dim);
+        let inv_h: Vec<f64> = h.iter().map(|h| 1.0 / h).collect();
+        let w_norm = inv_h.iter().map(|ih| sigma * ih.powi(dim as i32)).collect();
+        let g_norm = inv_h
+            .iter()
+            .map(|ih| sigma * ih.powi(dim as i32 + 1))
+            .collect();
+        Self {
+            kernel,
+            h,
+            inv_h,
+            w_norm,
+            g_norm,
+        }
+    }
 }
 
 impl<D: Dimension, K: Kernel> PairKernel<D> for ScalarPairKernel<'_, K> {
     #[inline]
     fn w(&self, i: usize, j: usize, r: D::Vector) -> f64 {
-        0.5 * (self.kernel.w(r, self.h[i]) + self.kernel.w(r, self.h[j]))
+        let d = r.norm();
+        0.5 * (self.kernel.f(d * self.inv_h[i]) * self.w_norm[i]
+            + self.kernel.f(d * self.inv_h[j]) * self.w_norm[j])
     }
     #[inline]
     fn grad(&self, i: usize, j: usize, r: D::Vector) -> D::Vector {
-        (self.kernel.grad_w(r, self.h[i]) + self.kernel.grad_w(r, self.h[j])) * 0.5
+        <Self as PairKernel<D>>::grad_at(self, i, j, r, r.norm())
+    }
+    #[inline]
+    fn grad_at(&self, i: usize, j: usize, r: D::Vector, dist: f64) -> D::Vector {
+        if dist == 0.0 {
+            return D::Vector::ZERO;
+        }
+        let gi = self.kernel.df(dist * self.inv_h[i]) * self.g_norm[i];
+        let gj = self.kernel.df(dist * self.inv_h[j]) * self.g_norm[j];
+        r * (0.5 * (gi + gj) / dist)
     }
     #[inline]
     fn h(&self, i: usize) -> f64 {
@@ -43,11 +83,9 @@ impl<D: Dimension, K: Kernel> PairKernel<D> for ScalarPairKernel<'_, K> {
     #[inline]
     fn dw_dh_own(&self, i: usize, r: D::Vector) -> f64 {
         // W = σ h^(−d) f(r/h): ∂W/∂h = −σ h^(−d−1) (d f + q f').
-        let h = self.h[i];
-        let q = r.norm() / h;
+        let q = r.norm() * self.inv_h[i];
         let d = D::DIM as f64;
-        -self.kernel.sigma(D::DIM) / h.powi(D::DIM as i32 + 1)
-            * (d * self.kernel.f(q) + q * self.kernel.df(q))
+        -self.g_norm[i] * (d * self.kernel.f(q) + q * self.kernel.df(q))
     }
 }
 

@@ -231,10 +231,7 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
                 summation_density(
                     &ext,
                     &list,
-                    &ScalarPairKernel {
-                        kernel: self.kernel,
-                        h: &ext.h,
-                    },
+                    &ScalarPairKernel::new(self.kernel, &ext.h, D::DIM),
                 )
             } else {
                 summation_density(
@@ -265,10 +262,7 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
             || self.scheme.grad_h;
         let correct = self.scheme.gradient_correction;
         let (grads, rates_out, t3) = if ext.h_tensor.is_empty() {
-            let pk = ScalarPairKernel {
-                kernel: self.kernel,
-                h: &ext.h,
-            };
+            let pk = ScalarPairKernel::new(self.kernel, &ext.h, D::DIM);
             let g = need_grads.then(|| gradients(&ext, &list, &pk, correct));
             let t3 = Instant::now();
             let r = rates(&ext, &list, &pk, g.as_deref(), &self.scheme);

@@ -78,25 +78,34 @@ impl Problem {
         }
     }
 
-    /// The scheme a problem runs with unless overridden: the study's defaults, except
+    /// The scheme a problem runs with unless overridden: the solver's defaults
+    /// (continuity density in the mass form with the grad-h factor, the study's kernel,
+    /// CFL and viscosity), except
     ///
     /// * n_target = 4 in 1-D: with the study's 2.5 (5 neighbours in 1-D) the
-    ///   zeroth-order SPH error leaves Sod's star state 4–10 % off at any resolution;
-    /// * summation density for these gas problems: the continuity equation has no lower
-    ///   bound at a blast centre (Sedov stops with a collapsed time step) and is less
-    ///   accurate at Noh's infinite-Mach shock (L1 0.076 against 0.062 planar).
+    ///   zeroth-order SPH error leaves Sod's star state 2–10 % off at any resolution;
+    /// * summation density for Noh and Sedov: the continuity equation has no lower bound
+    ///   at a blast centre (Sedov stops with a collapsed time step) and is less accurate
+    ///   at Noh's infinite-Mach shock (L1 0.076 against 0.062 planar).
     ///
     /// The measurements behind both are in docs/verification.md.
     pub fn default_scheme(&self) -> crate::SchemeConfig {
-        let mut s = crate::SchemeConfig {
-            density: crate::DensityForm::Summation,
-            ..Default::default()
-        };
+        let mut s = crate::SchemeConfig::default();
         if matches!(
             self,
             Problem::Sod | Problem::Toro123 | Problem::Toro3 | Problem::NohPlanar
         ) {
             s.n_target = 4.0;
+        }
+        if matches!(
+            self,
+            Problem::NohPlanar
+                | Problem::NohCylindrical
+                | Problem::NohSpherical
+                | Problem::Sedov2d
+                | Problem::Sedov3d
+        ) {
+            s.density = crate::DensityForm::Summation;
         }
         s
     }
