@@ -217,3 +217,48 @@ fn bad_scheme_and_state_are_typed_errors() {
         .unwrap();
     assert!(e.to_string().contains("material id 3"), "{e}");
 }
+
+#[test]
+fn asph_tensors_stay_positive_definite_and_on_target_volume() {
+    // The blob's particles, rebuilt with ASPH (the tensors are initialised by `new`).
+    let p = blob(false).state.particles.clone();
+    let mut sim = Simulation::new(
+        p,
+        vec![Material::fluid("gas", IdealGas::with_gamma(1.4).unwrap())],
+        SchemeConfig {
+            smoothing: sph_impact::SmoothingMode::Asph { max_aspect: 4.0 },
+            ..Default::default()
+        },
+        WendlandC2,
+        Vec::new(),
+        None,
+    )
+    .unwrap();
+    let c0 = sim.conserved();
+    for _ in 0..20 {
+        sim.step(f64::INFINITY).unwrap();
+    }
+    let s = &sim.state;
+    assert_eq!(s.h_tensor.len(), s.particles.len());
+    for i in 0..s.particles.len() {
+        let h = s.h_tensor[i];
+        let e = sph_core::Tensor::sym_eigen(&h);
+        assert!(e.values[0] > 0.0, "particle {i}: H not positive definite");
+        assert!(
+            e.values[1] / e.values[0] <= 4.0 + 1e-9,
+            "particle {i}: aspect {}",
+            e.values[1] / e.values[0]
+        );
+        // Equivalent radius det(H)^(-1/2) = n_target (m/ρ)^(1/2), capped at 4× its start.
+        let target = (2.5 * (s.particles.mass[i] / s.particles.density[i]).sqrt())
+            .min(4.0 * 2.5 * s.spacing0[i]);
+        let radius = h.determinant().powf(-0.5);
+        assert!(
+            (radius / target - 1.0).abs() < 1e-9,
+            "particle {i}: radius {radius} target {target}"
+        );
+    }
+    let c1 = sim.conserved();
+    let scale: f64 = c0.mass;
+    assert!((c1.momentum - c0.momentum).length() / scale < 1e-12);
+}

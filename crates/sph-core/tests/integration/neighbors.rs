@@ -203,6 +203,22 @@ fn bad_inputs_are_typed_errors() {
 }
 
 #[test]
+fn tensor_support_accepts_round_off_asymmetry() {
+    // Off-diagonal entries of 1e-17 and −1e-17 on a tensor of size 7: symmetric to
+    // round-off, must be accepted.
+    let h = [DMat2::from_cols(
+        DVec2::new(7.0, 1e-17),
+        DVec2::new(-1e-17, 7.0),
+    )];
+    assert!(TensorSupport::new(&h).is_ok());
+    let skew = [DMat2::from_cols(
+        DVec2::new(7.0, 1e-3),
+        DVec2::new(-1e-3, 7.0),
+    )];
+    assert!(TensorSupport::new(&skew).is_err());
+}
+
+#[test]
 fn empty_input_gives_empty_list() {
     let x: Vec<DVec3> = Vec::new();
     let list = CellList::new()

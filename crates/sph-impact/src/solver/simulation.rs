@@ -554,6 +554,8 @@ fn asph_update<T: Tensor>(h: &T, l: &T, dt: f64, target_radius: f64, max_aspect:
             .map(|k| v.component(a, k) * lam[k] * scale * v.component(b, k))
             .sum()
     });
+    // V diag(λ) Vᵀ is symmetric in exact arithmetic; make it so in floating point.
+    let h_new = h_new.symmetric();
     let radius = equivalent_radius(&h_new);
     (h_new, radius)
 }
