@@ -63,18 +63,7 @@ impl DruckerPrager {
     }
 }
 
-impl TryFrom<DruckerPragerParams> for DruckerPrager {
-    type Error = StrengthError;
-    fn try_from(p: DruckerPragerParams) -> Result<Self, StrengthError> {
-        Self::new(p)
-    }
-}
-
-impl From<DruckerPrager> for DruckerPragerParams {
-    fn from(m: DruckerPrager) -> Self {
-        m.params
-    }
-}
+crate::params_conversions!(DruckerPrager, DruckerPragerParams);
 
 impl StrengthModel for DruckerPrager {
     fn name(&self) -> &str {

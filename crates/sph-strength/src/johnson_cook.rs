@@ -99,18 +99,7 @@ impl JohnsonCook {
     }
 }
 
-impl TryFrom<JohnsonCookParams> for JohnsonCook {
-    type Error = StrengthError;
-    fn try_from(p: JohnsonCookParams) -> Result<Self, StrengthError> {
-        Self::new(p)
-    }
-}
-
-impl From<JohnsonCook> for JohnsonCookParams {
-    fn from(m: JohnsonCook) -> Self {
-        m.params
-    }
-}
+crate::params_conversions!(JohnsonCook, JohnsonCookParams);
 
 impl StrengthModel for JohnsonCook {
     fn name(&self) -> &str {

@@ -69,3 +69,23 @@ pub use radial_return::{ReturnResult, equivalent_stress, j2, radial_return};
 pub use steinberg_guinan::{SgMeltLaw, SteinbergGuinan, SteinbergGuinanParams};
 pub use von_mises::{LinearHardening, VonMises, VonMisesParams};
 pub use weakening::{damaged_strength, frictional_weakening, multiplicative_weakening};
+
+/// Serde goes through the parameter struct: deserialising validates with `new`, and a
+/// model serialises as its parameters. One line per model instead of two impl blocks.
+#[macro_export]
+#[doc(hidden)]
+macro_rules! params_conversions {
+    ($model:ty, $params:ty) => {
+        impl TryFrom<$params> for $model {
+            type Error = $crate::StrengthError;
+            fn try_from(p: $params) -> Result<Self, $crate::StrengthError> {
+                Self::new(p)
+            }
+        }
+        impl From<$model> for $params {
+            fn from(m: $model) -> Self {
+                m.params
+            }
+        }
+    };
+}

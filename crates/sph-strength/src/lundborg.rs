@@ -91,18 +91,7 @@ impl Lundborg {
     }
 }
 
-impl TryFrom<LundborgParams> for Lundborg {
-    type Error = StrengthError;
-    fn try_from(p: LundborgParams) -> Result<Self, StrengthError> {
-        Self::new(p)
-    }
-}
-
-impl From<Lundborg> for LundborgParams {
-    fn from(m: Lundborg) -> Self {
-        m.params
-    }
-}
+crate::params_conversions!(Lundborg, LundborgParams);
 
 impl StrengthModel for Lundborg {
     fn name(&self) -> &str {

@@ -182,18 +182,7 @@ impl SteinbergGuinan {
     }
 }
 
-impl TryFrom<SteinbergGuinanParams> for SteinbergGuinan {
-    type Error = StrengthError;
-    fn try_from(p: SteinbergGuinanParams) -> Result<Self, StrengthError> {
-        Self::new(p)
-    }
-}
-
-impl From<SteinbergGuinan> for SteinbergGuinanParams {
-    fn from(m: SteinbergGuinan) -> Self {
-        m.params
-    }
-}
+crate::params_conversions!(SteinbergGuinan, SteinbergGuinanParams);
 
 impl StrengthModel for SteinbergGuinan {
     fn name(&self) -> &str {

@@ -64,18 +64,7 @@ impl VonMises {
     }
 }
 
-impl TryFrom<VonMisesParams> for VonMises {
-    type Error = StrengthError;
-    fn try_from(p: VonMisesParams) -> Result<Self, StrengthError> {
-        Self::new(p)
-    }
-}
-
-impl From<VonMises> for VonMisesParams {
-    fn from(m: VonMises) -> Self {
-        m.params
-    }
-}
+crate::params_conversions!(VonMises, VonMisesParams);
 
 impl StrengthModel for VonMises {
     fn name(&self) -> &str {

@@ -10,11 +10,10 @@
 //! innermost particles' ρ/ρ2 and e/0.5.
 
 use super::outcome::{Outcome, Profile};
-use super::radial::{RADIAL_COLUMNS, Radial};
+use super::radial::{RADIAL_COLUMNS, Radial, push_exact_curves};
 use super::setup::{gas, last_crossing, particle, simulation};
 use crate::{Boundary, SchemeConfig, Simulation, SolverError};
 use sph_core::{Dim1, Dim2, Dim3, Dimension, Particles, Vector};
-use sph_diagnostics::error_norms;
 use sph_diagnostics::exact::Noh;
 use sph_geometry::{Sphere, cubic_lattice};
 use sph_kernel::KernelChoice;
@@ -113,17 +112,7 @@ fn finish<D: Dimension>(
     out.set("steps", steps as f64);
     out.set("wall_time_s", wall);
     let window = |k: usize| rad.r[k] >= 0.05 && rad.r[k] <= 0.35;
-    let fields: [(&str, &Vec<f64>, Vec<f64>); 4] = [
-        ("rho", &rad.rho, ex.iter().map(|s| s.density).collect()),
-        ("v", &rad.vr, ex.iter().map(|s| s.velocity).collect()),
-        ("p", &rad.p, ex.iter().map(|s| s.pressure).collect()),
-        ("e", &rad.e, ex.iter().map(|s| s.specific_energy).collect()),
-    ];
-    for (f, num, exv) in fields {
-        let nrm = error_norms(num, &exv, &rad.w, window);
-        out.set(&format!("l1_{f}"), nrm.l1);
-        out.set(&format!("linf_{f}"), nrm.linf);
-    }
+    rad.set_norms(&mut out, &ex, window, true);
     // Shock: the outermost crossing of the mid density, on radially binned data in 2-D/3-D.
     let rho2 = noh.post_shock_density();
     let r_s = noh.shock_radius(T_END);
@@ -164,27 +153,6 @@ fn finish<D: Dimension>(
         columns: RADIAL_COLUMNS.map(String::from).to_vec(),
         rows: rad.rows(&ex_cols),
     };
-    let dense: Vec<f64> = (1..=1000).map(|k| k as f64 / 1000.0).collect();
-    out.exact.push((
-        "rho".into(),
-        dense
-            .iter()
-            .map(|&r| (r, noh.state(r, T_END).density))
-            .collect(),
-    ));
-    out.exact.push((
-        "v".into(),
-        dense
-            .iter()
-            .map(|&r| (r, noh.state(r, T_END).velocity))
-            .collect(),
-    ));
-    out.exact.push((
-        "p".into(),
-        dense
-            .iter()
-            .map(|&r| (r, noh.state(r, T_END).pressure))
-            .collect(),
-    ));
+    push_exact_curves(&mut out, 1.0, |r| noh.state(r, T_END));
     Ok(out)
 }

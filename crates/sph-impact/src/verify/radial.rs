@@ -1,7 +1,10 @@
 //! Radial profiles of 2-D/3-D runs: per-particle values against r, and binned means.
 
+use super::outcome::Outcome;
 use crate::Simulation;
 use sph_core::{Dimension, Vector};
+use sph_diagnostics::error_norms;
+use sph_diagnostics::exact::RadialState;
 use sph_kernel::Kernel;
 
 /// Per-particle radial data, sorted by r.
@@ -74,6 +77,45 @@ impl Radial {
             })
             .collect()
     }
+}
+
+impl Radial {
+    /// L1 and Linf of density, radial velocity, pressure (and specific energy when
+    /// `with_e`) against `exact` (one state per particle), over the particles `include`
+    /// selects, recorded as `l1_rho`, `linf_rho`, … in `out`.
+    pub fn set_norms(
+        &self,
+        out: &mut Outcome,
+        exact: &[RadialState],
+        include: impl Fn(usize) -> bool + Copy,
+        with_e: bool,
+    ) {
+        let fields: [(&str, &Vec<f64>, fn(&RadialState) -> f64); 4] = [
+            ("rho", &self.rho, |s| s.density),
+            ("v", &self.vr, |s| s.velocity),
+            ("p", &self.p, |s| s.pressure),
+            ("e", &self.e, |s| s.specific_energy),
+        ];
+        for (name, numerical, pick) in fields.into_iter().take(if with_e { 4 } else { 3 }) {
+            let ex: Vec<f64> = exact.iter().map(pick).collect();
+            let n = error_norms(numerical, &ex, &self.w, include);
+            out.set(&format!("l1_{name}"), n.l1);
+            out.set(&format!("linf_{name}"), n.linf);
+        }
+    }
+}
+
+/// Samples the exact density, velocity and pressure on (0, r_max] for the plot.
+pub(crate) fn push_exact_curves(out: &mut Outcome, r_max: f64, state: impl Fn(f64) -> RadialState) {
+    let samples: Vec<(f64, RadialState)> = (1..=1000)
+        .map(|k| k as f64 / 1000.0 * r_max)
+        .map(|r| (r, state(r)))
+        .collect();
+    let curve =
+        |pick: fn(&RadialState) -> f64| samples.iter().map(|(r, s)| (*r, pick(s))).collect();
+    out.exact.push(("rho".into(), curve(|s| s.density)));
+    out.exact.push(("v".into(), curve(|s| s.velocity)));
+    out.exact.push(("p".into(), curve(|s| s.pressure)));
 }
 
 /// Column names matching [`Radial::rows`].

@@ -9,12 +9,12 @@
 //! peak location. Norms over r < 1.2 R against the exact profile, weights m/ρ.
 
 use super::outcome::{Outcome, Profile};
-use super::radial::{RADIAL_COLUMNS, Radial};
+use super::radial::{RADIAL_COLUMNS, Radial, push_exact_curves};
 use super::setup::{gas, last_crossing, particle, simulation};
 use crate::{SchemeConfig, SolverError};
 use sph_core::{Dim2, Dim3, Dimension, Particles, Vector};
 use sph_diagnostics::exact::Sedov;
-use sph_diagnostics::{error_norms, log_log_slope};
+use sph_diagnostics::log_log_slope;
 use sph_geometry::{Cuboid, cubic_lattice};
 use sph_kernel::Kernel;
 
@@ -121,16 +121,7 @@ fn run<D: Dimension>(
     let big_r = exact.shock_radius(t_end);
     let ex: Vec<_> = rad.r.iter().map(|&r| exact.state(r, t_end)).collect();
     let inside = |k: usize| rad.r[k] < 1.2 * big_r;
-    let fields: [(&str, &Vec<f64>, Vec<f64>); 3] = [
-        ("rho", &rad.rho, ex.iter().map(|s| s.density).collect()),
-        ("v", &rad.vr, ex.iter().map(|s| s.velocity).collect()),
-        ("p", &rad.p, ex.iter().map(|s| s.pressure).collect()),
-    ];
-    for (f, num, exv) in fields {
-        let nrm = error_norms(num, &exv, &rad.w, inside);
-        out.set(&format!("l1_{f}"), nrm.l1);
-        out.set(&format!("linf_{f}"), nrm.linf);
-    }
+    rad.set_norms(&mut out, &ex, inside, false);
     let ex_cols: Vec<(f64, f64, f64, f64)> = ex
         .iter()
         .map(|s| (s.density, s.velocity, s.pressure, s.specific_energy))
@@ -139,29 +130,6 @@ fn run<D: Dimension>(
         columns: RADIAL_COLUMNS.map(String::from).to_vec(),
         rows: rad.rows(&ex_cols),
     };
-    let dense: Vec<f64> = (1..=1000)
-        .map(|k| k as f64 / 1000.0 * 1.2 * big_r)
-        .collect();
-    out.exact.push((
-        "rho".into(),
-        dense
-            .iter()
-            .map(|&r| (r, exact.state(r, t_end).density))
-            .collect(),
-    ));
-    out.exact.push((
-        "v".into(),
-        dense
-            .iter()
-            .map(|&r| (r, exact.state(r, t_end).velocity))
-            .collect(),
-    ));
-    out.exact.push((
-        "p".into(),
-        dense
-            .iter()
-            .map(|&r| (r, exact.state(r, t_end).pressure))
-            .collect(),
-    ));
+    push_exact_curves(&mut out, 1.2 * big_r, |r| exact.state(r, t_end));
     Ok(out)
 }
