@@ -90,7 +90,7 @@ impl Radial {
         include: impl Fn(usize) -> bool + Copy,
         with_e: bool,
     ) {
-        let fields: [(&str, &Vec<f64>, fn(&RadialState) -> f64); 4] = [
+        let fields: [Field; 4] = [
             ("rho", &self.rho, |s| s.density),
             ("v", &self.vr, |s| s.velocity),
             ("p", &self.p, |s| s.pressure),
@@ -104,6 +104,9 @@ impl Radial {
         }
     }
 }
+
+/// A profile field: its name, the particle values and how to read it from an exact state.
+type Field<'a> = (&'static str, &'a Vec<f64>, fn(&RadialState) -> f64);
 
 /// Samples the exact density, velocity and pressure on (0, r_max] for the plot.
 pub(crate) fn push_exact_curves(out: &mut Outcome, r_max: f64, state: impl Fn(f64) -> RadialState) {
