@@ -44,6 +44,9 @@ pub(crate) struct Rates<D: Dimension> {
     /// The part of dv/dt exerted by ghosts (boundaries): their impulse is accounted so
     /// that momentum balances to round-off even with walls.
     pub dv_boundary: D::Vector,
+    /// W_i = Σ_j m_j F_ij (v*_ij·∇W): with it de/dt = W_i − v_i·(dv/dt) in the compatible
+    /// form, which lets the final RK2 update use the time-centred velocity.
+    pub work: f64,
 }
 
 /// Summation density ρ_i = m_i W(0) + Σ_j m_j W̄_ij over real particles.
@@ -163,6 +166,7 @@ pub(crate) fn rates<D: Dimension, P: PairKernel<D>>(
                 de: 0.0,
                 approach: 0.0,
                 dv_boundary: D::Vector::ZERO,
+                work: 0.0,
             };
             for &j in list.neighbors(i) {
                 let j = j as usize;
@@ -274,7 +278,10 @@ pub(crate) fn rates<D: Dimension, P: PairKernel<D>>(
                 // of the momentum equation, which is what makes it exactly conservative.
                 let dvs_plain = (vi - v_star).dot(g);
                 out.de += match scheme.energy {
-                    EnergyForm::Compatible => -mj * coef * dvs_plain,
+                    EnergyForm::Compatible => {
+                        out.work += mj * coef * v_star.dot(g);
+                        -mj * coef * dvs_plain
+                    }
                     EnergyForm::Study => {
                         mj * (2.0 * pi / (rhoi * rhoj) * dvs + 0.5 * (pi_ij + a_ij) * vij.dot(g))
                     }

@@ -2,7 +2,7 @@
 //! second-order Runge–Kutta (midpoint) method and the adaptive CFL step (paper §2.5).
 
 use crate::solver::boundary::Boundary;
-use crate::solver::config::{DensityForm, SchemeConfig, SmoothingMode};
+use crate::solver::config::{DensityForm, EnergyForm, SchemeConfig, SmoothingMode};
 use crate::solver::derivatives::{Gradients, Rates, gradients, rates, summation_density};
 use crate::solver::error::SolverError;
 use crate::solver::material::Material;
@@ -393,6 +393,7 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
         rate_state: &State<D>,
     ) {
         let p = &mut y.particles;
+        let v_old = p.velocity.clone();
         p.position
             .par_iter_mut()
             .zip(velocity)
@@ -409,10 +410,22 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
             .zip(&stage.rates)
             .zip(rho_rate)
             .for_each(|((rho, r), &rr)| *rho *= (r.drho * dt / rr).exp());
-        p.specific_energy
-            .par_iter_mut()
-            .zip(&stage.rates)
-            .for_each(|(e, r)| *e += r.de * dt);
+        if self.scheme.energy == EnergyForm::Compatible {
+            // de = W − v̄·a with the time-centred v̄ = (v_old + v_new)/2: then the kinetic
+            // energy change m v̄·Δv and Σ m Δe cancel pair by pair (F_ji = −F_ij,
+            // v*_ji = v*_ij), so the step conserves energy to round-off, not just to O(dt³).
+            let v_new = &p.velocity;
+            p.specific_energy.par_iter_mut().enumerate().for_each(|(i, e)| {
+                let r = &stage.rates[i];
+                let v_bar = (v_old[i] + v_new[i]) * 0.5;
+                *e += (r.work - v_bar.dot(r.dv)) * dt;
+            });
+        } else {
+            p.specific_energy
+                .par_iter_mut()
+                .zip(&stage.rates)
+                .for_each(|(e, r)| *e += r.de * dt);
+        }
         let d = D::DIM as f64;
         let n_target = self.scheme.n_target;
         match self.scheme.smoothing {
