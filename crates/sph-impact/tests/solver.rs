@@ -262,3 +262,16 @@ fn asph_tensors_stay_positive_definite_and_on_target_volume() {
     let scale: f64 = c0.mass;
     assert!((c1.momentum - c0.momentum).length() / scale < 1e-12);
 }
+
+#[test]
+fn total_energy_is_conserved_to_round_off_without_boundaries() {
+    let mut sim = blob(false);
+    let e0 = sim.conserved().energy();
+    for _ in 0..30 {
+        sim.step(f64::INFINITY).unwrap();
+    }
+    let e1 = sim.conserved().energy();
+    let rel = (e1 - e0) / e0;
+    println!("relative energy change after 30 steps: {rel:e}");
+    assert!(rel.abs() < 1e-12, "{rel:e}");
+}

@@ -415,11 +415,14 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
             // energy change m v̄·Δv and Σ m Δe cancel pair by pair (F_ji = −F_ij,
             // v*_ji = v*_ij), so the step conserves energy to round-off, not just to O(dt³).
             let v_new = &p.velocity;
-            p.specific_energy.par_iter_mut().enumerate().for_each(|(i, e)| {
-                let r = &stage.rates[i];
-                let v_bar = (v_old[i] + v_new[i]) * 0.5;
-                *e += (r.work - v_bar.dot(r.dv)) * dt;
-            });
+            p.specific_energy
+                .par_iter_mut()
+                .enumerate()
+                .for_each(|(i, e)| {
+                    let r = &stage.rates[i];
+                    let v_bar = (v_old[i] + v_new[i]) * 0.5;
+                    *e += (r.work - v_bar.dot(r.dv)) * dt;
+                });
         } else {
             p.specific_energy
                 .par_iter_mut()
