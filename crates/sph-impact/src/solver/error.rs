@@ -60,6 +60,14 @@ pub enum SolverError {
         /// Why.
         reason: &'static str,
     },
+    /// A boundary condition is invalid.
+    #[error("boundary {index}: {reason}")]
+    BadBoundary {
+        /// Position in the boundary list.
+        index: usize,
+        /// What is wrong.
+        reason: String,
+    },
     /// A material model could not be built.
     #[error("material: {0}")]
     Material(String),

@@ -121,12 +121,8 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
                 });
             }
         }
-        for b in &boundaries {
-            b.validate().map_err(|_| SolverError::BadConfig {
-                field: "boundary",
-                value: f64::NAN,
-                reason: "invalid boundary (see Boundary::validate)",
-            })?;
+        for (index, b) in boundaries.iter().enumerate() {
+            b.validate().map_err(|reason| SolverError::BadBoundary { index, reason })?;
         }
         let n = particles.len();
         let spacing0 = spacing0.unwrap_or_else(|| {
