@@ -279,10 +279,30 @@ fn total_energy_is_conserved_to_round_off_without_boundaries() {
 #[test]
 fn bad_boundary_is_a_typed_error_naming_it() {
     let p = blob(false).state.particles.clone();
-    let walls = vec![Boundary::Periodic { axis: 0, lo: 0.0, hi: 1.0 }, Boundary::Wall { point: DVec2::ZERO, normal: DVec2::new(0.0, 2.0) }];
-    let e = Simulation::new(p, vec![Material::fluid("gas", IdealGas::with_gamma(1.4).unwrap())], SchemeConfig::default(), WendlandC2, walls, None)
-        .err()
-        .unwrap();
+    let walls = vec![
+        Boundary::Periodic {
+            axis: 0,
+            lo: 0.0,
+            hi: 1.0,
+        },
+        Boundary::Wall {
+            point: DVec2::ZERO,
+            normal: DVec2::new(0.0, 2.0),
+        },
+    ];
+    let e = Simulation::new(
+        p,
+        vec![Material::fluid("gas", IdealGas::with_gamma(1.4).unwrap())],
+        SchemeConfig::default(),
+        WendlandC2,
+        walls,
+        None,
+    )
+    .err()
+    .unwrap();
     let msg = e.to_string();
-    assert!(msg.starts_with("boundary 1:") && msg.contains("unit vector"), "{msg}");
+    assert!(
+        msg.starts_with("boundary 1:") && msg.contains("unit vector"),
+        "{msg}"
+    );
 }

@@ -122,7 +122,8 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
             }
         }
         for (index, b) in boundaries.iter().enumerate() {
-            b.validate().map_err(|reason| SolverError::BadBoundary { index, reason })?;
+            b.validate()
+                .map_err(|reason| SolverError::BadBoundary { index, reason })?;
         }
         let n = particles.len();
         let spacing0 = spacing0.unwrap_or_else(|| {
