@@ -171,9 +171,15 @@ fn toro_3_shock_within_two_percent() {
 }
 
 #[test]
-fn planar_noh_runs_and_places_the_shock() {
+fn planar_noh_meets_its_targets() {
     let o = Problem::NohPlanar.run(Some(100)).unwrap();
     println!("{:?}", o.metrics);
+    // verification.md §2: ρ L1 over [0.05, 0.35] ≤ 0.048 at nx = 100, shock at 0.2 ± 1 spacing.
+    assert!(
+        o.get("l1_rho").unwrap() <= 0.048,
+        "{}",
+        o.get("l1_rho").unwrap()
+    );
     assert!(o.get("shock_error_in_spacings").unwrap().abs() < 1.0);
     assert!(o.get("momentum_balance_relative").unwrap() < 1e-12);
 }

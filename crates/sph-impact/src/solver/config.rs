@@ -37,6 +37,20 @@ pub enum DensityForm {
     Summation,
 }
 
+/// The pressure in the momentum equation's pair force.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum MomentumForm {
+    /// The study's form: (σ_i + σ_j)/(ρ_iρ_j), for a fluid −(P_i + P_j)/(ρ_iρ_j).
+    #[default]
+    ParticlePressure,
+    /// −2P*/(ρ_iρ_j) with P* the star pressure of the pair's Riemann problem (as in
+    /// Godunov SPH, Inutsuka 2002; Spheral's GSPH): the Riemann solver then also
+    /// dissipates in the momentum equation. P* is symmetric in (i, j), so momentum is
+    /// still conserved exactly.
+    StarPressure,
+}
+
 /// How smoothing lengths follow the flow.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
 #[serde(rename_all = "kebab-case", tag = "kind")]
@@ -82,6 +96,8 @@ pub struct SchemeConfig {
     pub energy: EnergyForm,
     /// Continuity equation.
     pub density: DensityForm,
+    /// Pressure in the momentum equation.
+    pub momentum: MomentumForm,
     /// Linear gradient correction in the continuity equation and the velocity gradient:
     /// ∇W → M_i⁻ᵀ∇W with M_i = Σ_j V_j (x_j − x_i) ⊗ ∇_i W̄_ij, exact for linear velocity
     /// fields (Bonet & Lok 1999; miluphcuda's tensorial correction). The momentum
@@ -119,6 +135,7 @@ impl Default for SchemeConfig {
             limiter: Limiter::VanLeer,
             energy: EnergyForm::Compatible,
             density: DensityForm::Mass,
+            momentum: MomentumForm::ParticlePressure,
             gradient_correction: false,
             grad_h: true,
             h_max_factor: 4.0,

@@ -15,7 +15,7 @@
 //! Each particle's sums depend only on its own sorted neighbour row, so results are
 //! identical for any number of threads.
 
-use crate::solver::config::{DensityForm, EnergyForm, SchemeConfig};
+use crate::solver::config::{DensityForm, EnergyForm, MomentumForm, SchemeConfig};
 use crate::solver::pair_kernel::PairKernel;
 use crate::solver::state::Extended;
 use rayon::prelude::*;
@@ -256,7 +256,13 @@ pub(crate) fn rates<D: Dimension, P: PairKernel<D>>(
                 } else {
                     0.0
                 };
-                let coef = -(pi + pj) / (rhoi * rhoj) - pi_ij - a_ij;
+                // The pressure part of the pair force: the particles' pressures (the
+                // study's σ_i + σ_j), or twice the pair's Riemann star pressure.
+                let p_pair = match scheme.momentum {
+                    MomentumForm::ParticlePressure => pi + pj,
+                    MomentumForm::StarPressure => 2.0 * scheme.riemann.star(&left, &right).pressure,
+                };
+                let coef = -p_pair / (rhoi * rhoj) - pi_ij - a_ij;
                 let force = g * (mj * coef);
                 out.dv += force;
                 if j >= ext.n_real {

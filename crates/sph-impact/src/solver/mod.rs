@@ -11,7 +11,7 @@ pub mod state;
 pub mod timestep;
 
 pub use boundary::Boundary;
-pub use config::{DensityForm, EnergyForm, SchemeConfig, SmoothingMode};
+pub use config::{DensityForm, EnergyForm, MomentumForm, SchemeConfig, SmoothingMode};
 pub use error::SolverError;
 pub use material::Material;
 pub use simulation::{Conserved, PhaseTimes, Simulation, StepInfo};
