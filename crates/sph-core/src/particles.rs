@@ -2,7 +2,7 @@
 //!
 //! Only the fields every SPH scheme has live here; physics packages (strength, damage)
 //! keep their own per-particle arrays and reorder them with the same
-//! [`Permutation`](crate::Permutation).
+//! [`Permutation`].
 
 use crate::dimension::Dimension;
 use crate::error::CoreError;

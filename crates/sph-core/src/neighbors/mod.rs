@@ -15,7 +15,7 @@ mod grid;
 mod list;
 
 pub use criterion::{PairCriterion, ScalarSupport, TensorSupport};
-pub use grid::CellList;
+pub use grid::{CellList, DEFAULT_MAX_LEVELS, LevelStats};
 pub use list::NeighborList;
 
 use crate::error::CoreError;
