@@ -24,6 +24,23 @@ pub trait Dimension: Copy + Clone + Send + Sync + Debug + Default + PartialEq + 
 
     /// Volume of the unit ball: 2 (1-D), π (2-D), 4π/3 (3-D).
     fn unit_ball_volume() -> f64;
+    /// The tensor as the top-left block of a 3×3 (zeros elsewhere): stress and strain
+    /// rate live in 3-D even in 1-D (uniaxial strain) and 2-D (plane strain).
+    fn embed(t: &Self::Tensor) -> glam::DMat3 {
+        glam::DMat3::from_cols_array_2d(&std::array::from_fn(|col| {
+            std::array::from_fn(|row| {
+                if row < Self::DIM && col < Self::DIM {
+                    t.component(row, col)
+                } else {
+                    0.0
+                }
+            })
+        }))
+    }
+    /// The top-left DIM×DIM block of a 3×3.
+    fn project(m: &glam::DMat3) -> Self::Tensor {
+        Self::Tensor::from_fn(|row, col| m.col(col)[row])
+    }
     /// Surface measure of the unit sphere: 2 (1-D), 2π (2-D), 4π (3-D).
     fn unit_sphere_area() -> f64 {
         Self::DIM as f64 * Self::unit_ball_volume()
@@ -79,5 +96,25 @@ mod tests {
         assert_eq!(Dim1::unit_sphere_area(), 2.0);
         assert!((Dim2::unit_sphere_area() - 2.0 * PI).abs() < 1e-15);
         assert!((Dim3::unit_sphere_area() - 4.0 * PI).abs() < 1e-14);
+    }
+}
+
+#[cfg(test)]
+mod embed_tests {
+    use super::*;
+    use crate::tensor::Tensor;
+
+    #[test]
+    fn embed_then_project_is_the_identity_and_pads_with_zeros() {
+        let t = DMat2::from_cols(DVec2::new(1.0, 2.0), DVec2::new(3.0, 4.0));
+        let m = Dim2::embed(&t);
+        assert_eq!(m.col(1)[0], 3.0);
+        assert_eq!(m.col(2), glam::DVec3::ZERO);
+        assert_eq!(Dim2::project(&m), t);
+        assert_eq!(Dim1::project(&Dim1::embed(&5.0)), 5.0);
+        assert_eq!(Dim1::embed(&5.0).col(1), glam::DVec3::ZERO);
+        let full = DMat3::from_cols_array(&[1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0, 8.0, 9.0]);
+        assert_eq!(Dim3::embed(&Dim3::project(&full)), full);
+        assert_eq!(full.component(0, 1), 4.0);
     }
 }

@@ -312,3 +312,15 @@ fn bad_boundary_is_a_typed_error_naming_it() {
         "{msg}"
     );
 }
+
+#[test]
+fn elastic_bars_carry_the_right_wave_and_separate() {
+    let o = Problem::ElasticBar.run(Some(100)).unwrap();
+    println!("{:?}", o.metrics);
+    // verification.md §10: front at c_L within 1 %, plateau ρ c_L v within 2 %.
+    assert!(o.get("front_speed_error_relative").unwrap().abs() < 0.01);
+    assert!(o.get("plateau_stress_error_max").unwrap() < 0.02);
+    // The unbonded interface lets the bars part (welded, they keep 0.15 % of KE0).
+    assert!(o.get("rebound_kinetic_energy_ratio").unwrap() > 0.9);
+    assert!(o.get("energy_change_relative").unwrap().abs() < 1e-12);
+}

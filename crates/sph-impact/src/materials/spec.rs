@@ -165,6 +165,24 @@ impl MaterialSpec {
         crate::Material {
             name: self.name.clone(),
             eos: self.eos.shared(),
+            strength: None,
+            thermal: None,
+        }
+    }
+
+    /// The material for the solver with its strength model and thermal data (damage is
+    /// not yet carried by the solver).
+    pub fn solver_material(&self) -> crate::Material {
+        let strength: Option<std::sync::Arc<dyn sph_strength::StrengthModel>> = (!self.is_fluid())
+            .then(|| {
+                std::sync::Arc::new(self.strength.clone())
+                    as std::sync::Arc<dyn sph_strength::StrengthModel>
+            });
+        crate::Material {
+            name: self.name.clone(),
+            eos: self.eos.shared(),
+            strength,
+            thermal: self.thermal,
         }
     }
 

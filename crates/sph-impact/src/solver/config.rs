@@ -111,6 +111,11 @@ pub struct SchemeConfig {
     /// (n_target × initial spacing): in strong expansions (a blast centre, ejecta) the
     /// density falls without bound and h would grow with it.
     pub h_max_factor: f64,
+    /// Interfaces between different materials are unbonded: such a pair exerts no
+    /// attractive (tensile) force, so bodies in contact can separate (a projectile from
+    /// its target, two colliding bars). The pair force is antisymmetric, so both sides
+    /// drop it together and conservation is unchanged.
+    pub unbonded_interfaces: bool,
     /// Smoothing-length evolution.
     pub smoothing: SmoothingMode,
 }
@@ -139,6 +144,7 @@ impl Default for SchemeConfig {
             gradient_correction: false,
             grad_h: true,
             h_max_factor: 4.0,
+            unbonded_interfaces: true,
             smoothing: SmoothingMode::Scalar,
         }
     }

@@ -47,6 +47,8 @@ pub(crate) struct Rates<D: Dimension> {
     /// W_i = Σ_j m_j F_ij (v*_ij·∇W): with it de/dt = W_i − v_i·(dv/dt) in the compatible
     /// form, which lets the final RK2 update use the time-centred velocity.
     pub work: f64,
+    /// Jaumann rate of the deviatoric stress, dS/dt (zero for fluids).
+    pub ds: sph_core::glam::DMat3,
 }
 
 /// Summation density ρ_i = m_i W(0) + Σ_j m_j W̄_ij over real particles.
@@ -141,8 +143,10 @@ pub(crate) fn rates<D: Dimension, P: PairKernel<D>>(
     pk: &P,
     grads: Option<&[Gradients<D>]>,
     scheme: &SchemeConfig,
+    shear_modulus: &[f64],
 ) -> Vec<Rates<D>> {
     let visc = scheme.viscosity;
+    let solid = !ext.stress.is_empty();
     let astress = scheme.artificial_stress;
     let use_astress = !astress.is_off();
     (0..ext.n_real)
@@ -155,6 +159,12 @@ pub(crate) fn rates<D: Dimension, P: PairKernel<D>>(
                 ext.sound_speed[i],
                 ext.material[i],
             );
+            // Particle i's deviatoric stress in D dimensions (the in-plane block).
+            let si = if solid {
+                D::project(&ext.stress[i])
+            } else {
+                D::Tensor::ZERO
+            };
             let ri = if use_astress {
                 astress.r(pi, rhoi)
             } else {
@@ -167,6 +177,7 @@ pub(crate) fn rates<D: Dimension, P: PairKernel<D>>(
                 approach: 0.0,
                 dv_boundary: D::Vector::ZERO,
                 work: 0.0,
+                ds: sph_core::glam::DMat3::ZERO,
             };
             for &j in list.neighbors(i) {
                 let j = j as usize;
@@ -263,7 +274,21 @@ pub(crate) fn rates<D: Dimension, P: PairKernel<D>>(
                     MomentumForm::StarPressure => 2.0 * scheme.riemann.star(&left, &right).pressure,
                 };
                 let coef = -p_pair / (rhoi * rhoj) - pi_ij - a_ij;
-                let force = g * (mj * coef);
+                // Pair force per unit mass of i: m_j[(σ_i + σ_j)/(ρ_iρ_j) − Π − A]∇W with
+                // σ = S − P I; symmetric in (i, j) up to the antisymmetric ∇W.
+                let mut force = g * (mj * coef);
+                if solid {
+                    let sj = D::project(&ext.stress[j]);
+                    force += (si + sj).mul_vec(g) * (mj / (rhoi * rhoj));
+                }
+                // An unbonded interface carries no tension: a pair of different materials
+                // whose force would pull i toward j does not interact at all (no force, and
+                // no density or energy change, so the opening gap does not stretch either
+                // body). The test is the same for (i, j) and (j, i).
+                if scheme.unbonded_interfaces && mi_mat != ext.material[j] && force.dot(r_hat) < 0.0
+                {
+                    continue;
+                }
                 out.dv += force;
                 if j >= ext.n_real {
                     out.dv_boundary += force;
@@ -285,11 +310,20 @@ pub(crate) fn rates<D: Dimension, P: PairKernel<D>>(
                 let dvs_plain = (vi - v_star).dot(g);
                 out.de += match scheme.energy {
                     EnergyForm::Compatible => {
-                        out.work += mj * coef * v_star.dot(g);
-                        -mj * coef * dvs_plain
+                        out.work += force.dot(v_star);
+                        -force.dot(vi - v_star)
                     }
                     EnergyForm::Study => {
-                        mj * (2.0 * pi / (rhoi * rhoj) * dvs + 0.5 * (pi_ij + a_ij) * vij.dot(g))
+                        // −2 m_j/(ρ_iρ_j) (v_i − v*)·(σ_i ∇W) with σ_i = S_i − P_i I, plus
+                        // the viscous and artificial-stress heating.
+                        let shear = if solid {
+                            -2.0 * mj / (rhoi * rhoj) * (vi - v_star).dot(si.mul_vec(g))
+                        } else {
+                            0.0
+                        };
+                        shear
+                            + mj * (2.0 * pi / (rhoi * rhoj) * dvs_plain
+                                + 0.5 * (pi_ij + a_ij) * vij.dot(g))
                     }
                 };
             }
@@ -302,6 +336,18 @@ pub(crate) fn rates<D: Dimension, P: PairKernel<D>>(
                 && let Some(gr) = grads
             {
                 out.drho /= gr[i].omega.clamp(0.5, 2.0);
+            }
+            // dS/dt = 2G ε̇' + ΩS − SΩ with the particle's velocity gradient embedded in 3-D
+            // (1-D uniaxial and 2-D plane strain: the out-of-plane rates are zero).
+            if solid
+                && shear_modulus[i] > 0.0
+                && let Some(gr) = grads
+            {
+                out.ds = sph_strength::jaumann_rate(
+                    &ext.stress[i],
+                    &D::embed(&gr[i].velocity),
+                    shear_modulus[i],
+                );
             }
             out
         })

@@ -78,6 +78,9 @@ struct Stage<D: Dimension> {
     rates: Vec<Rates<D>>,
     grads: Option<Vec<Gradients<D>>>,
     sound_speed: Vec<f64>,
+    pressure: Vec<f64>,
+    /// Shear modulus per particle (0 for fluids).
+    shear_modulus: Vec<f64>,
 }
 
 /// A running simulation.
@@ -148,11 +151,19 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
                 .map(|&h| D::Tensor::IDENTITY * (1.0 / h))
                 .collect(),
         };
+        let solid = materials.iter().any(|m| m.strength.is_some());
+        let (stress, plastic_strain) = if solid {
+            (vec![sph_core::glam::DMat3::ZERO; n], vec![0.0; n])
+        } else {
+            (Vec::new(), Vec::new())
+        };
         Ok(Self {
             state: State {
                 particles,
                 h_tensor,
                 spacing0,
+                stress,
+                plastic_strain,
                 time: 0.0,
                 step: 0,
             },
@@ -256,13 +267,15 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
         let need_grads = self.scheme.limiter != sph_riemann::Limiter::None
             || !state.h_tensor.is_empty()
             || self.scheme.gradient_correction
-            || self.scheme.grad_h;
+            || self.scheme.grad_h
+            || !state.stress.is_empty();
+        let shear_modulus = self.shear_moduli(state, &pressure);
         let correct = self.scheme.gradient_correction;
         let (grads, rates_out, t3) = if ext.h_tensor.is_empty() {
             let pk = ScalarPairKernel::new(self.kernel, &ext.h, D::DIM);
             let g = need_grads.then(|| gradients(&ext, &list, &pk, correct));
             let t3 = Instant::now();
-            let r = rates(&ext, &list, &pk, g.as_deref(), &self.scheme);
+            let r = rates(&ext, &list, &pk, g.as_deref(), &self.scheme, &shear_modulus);
             (g, r, t3)
         } else {
             let pk = TensorPairKernel {
@@ -272,7 +285,7 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
             };
             let g = need_grads.then(|| gradients(&ext, &list, &pk, correct));
             let t3 = Instant::now();
-            let r = rates(&ext, &list, &pk, g.as_deref(), &self.scheme);
+            let r = rates(&ext, &list, &pk, g.as_deref(), &self.scheme, &shear_modulus);
             (g, r, t3)
         };
         let t4 = Instant::now();
@@ -286,6 +299,8 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
                 rates: rates_out,
                 grads,
                 sound_speed,
+                pressure,
+                shear_modulus,
             },
             list,
         ))
@@ -303,13 +318,10 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
             let dx = self.spacing(state, i);
             let r = &stage.rates[i];
             best = best.min(density_vote(self.scheme.cfl, p.density[i], r.drho, p.id[i]));
-            best = best.min(cfl_vote(
-                self.scheme.cfl,
-                dx,
-                stage.sound_speed[i],
-                r.approach,
-                p.id[i],
-            ));
+            // For a solid the signal is the longitudinal wave: c_L² = c² + 4G/(3ρ) (paper §2.5).
+            let c = stage.sound_speed[i];
+            let c_signal = (c * c + 4.0 * stage.shear_modulus[i] / (3.0 * p.density[i])).sqrt();
+            best = best.min(cfl_vote(self.scheme.cfl, dx, c_signal, r.approach, p.id[i]));
             best = best.min(acceleration_vote(self.scheme.cfl, dx, r.dv.norm(), p.id[i]));
         }
         best
@@ -463,6 +475,9 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
                 }
             }
         }
+        if !y.stress.is_empty() {
+            self.update_stress(y, stage, dt);
+        }
     }
 
     /// With summation density, recomputes ρ (and h) from the current positions, so that
@@ -474,6 +489,61 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
             self.state.particles.density = s.particles.density;
         }
         Ok(())
+    }
+
+    /// The strength model's view of particle i at the given pressure.
+    fn strength_state(&self, s: &State<D>, i: usize, pressure: f64) -> sph_strength::StrengthState {
+        let p = &s.particles;
+        let m = &self.materials[p.material[i] as usize];
+        let temperature = m
+            .thermal
+            .as_ref()
+            .map_or(300.0, |t| t.temperature(p.specific_energy[i]));
+        let mut st = sph_strength::StrengthState::new(pressure, p.density[i], temperature);
+        st.plastic_strain = s.plastic_strain.get(i).copied().unwrap_or(0.0);
+        st
+    }
+
+    /// Shear modulus of every particle (0 for fluids, and for everything when no
+    /// material has strength).
+    fn shear_moduli(&self, s: &State<D>, pressure: &[f64]) -> Vec<f64> {
+        if s.stress.is_empty() {
+            return vec![0.0; s.particles.len()];
+        }
+        (0..s.particles.len())
+            .into_par_iter()
+            .map(
+                |i| match &self.materials[s.particles.material[i] as usize].strength {
+                    Some(model) => model.shear_modulus(&self.strength_state(s, i, pressure[i])),
+                    None => 0.0,
+                },
+            )
+            .collect()
+    }
+
+    /// S ← S + dt dS/dt (Jaumann rate from the stage), then the radial return onto the
+    /// yield surface at the stage's pressure; the plastic strain grows by
+    /// (√(3J2_trial) − Y)/(3G) (Wilkins 1964).
+    fn update_stress(&self, y: &mut State<D>, stage: &Stage<D>, dt: f64) {
+        let updated: Vec<(sph_core::glam::DMat3, f64)> = (0..y.particles.len())
+            .into_par_iter()
+            .map(|i| {
+                let Some(model) = &self.materials[y.particles.material[i] as usize].strength else {
+                    return (sph_core::glam::DMat3::ZERO, y.plastic_strain[i]);
+                };
+                let trial = y.stress[i] + stage.rates[i].ds * dt;
+                let st = self.strength_state(y, i, stage.pressure[i]);
+                let ret = sph_strength::radial_return(trial, model.yield_strength(&st));
+                let dep = ret
+                    .plastic_strain_increment(stage.shear_modulus[i])
+                    .unwrap_or(0.0);
+                (ret.stress, y.plastic_strain[i] + dep)
+            })
+            .collect();
+        for (i, (s, ep)) in updated.into_iter().enumerate() {
+            y.stress[i] = s;
+            y.plastic_strain[i] = ep;
+        }
     }
 
     /// Rejects non-finite or non-physical states, naming the particle.

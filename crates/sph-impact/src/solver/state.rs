@@ -13,6 +13,11 @@ pub struct State<D: Dimension> {
     pub h_tensor: Vec<D::Tensor>,
     /// Initial particle spacing Δp (m), per particle.
     pub spacing0: Vec<f64>,
+    /// Deviatoric stress S (Pa) as a 3×3 (the out-of-plane components of 1-D uniaxial
+    /// strain and 2-D plane strain included); empty when no material has strength.
+    pub stress: Vec<sph_core::glam::DMat3>,
+    /// Equivalent plastic strain; empty when no material has strength.
+    pub plastic_strain: Vec<f64>,
     /// Simulated time (s).
     pub time: f64,
     /// Completed steps.
@@ -38,6 +43,8 @@ pub(crate) struct Extended<D: Dimension> {
     /// For ghosts: the map from the source's vectors to the ghost's (reflection or
     /// identity); identity for real particles.
     pub map: Vec<D::Tensor>,
+    /// Deviatoric stress (empty without strength); ghosts carry M S Mᵀ.
+    pub stress: Vec<sph_core::glam::DMat3>,
 }
 
 impl<D: Dimension> Extended<D> {
@@ -67,6 +74,7 @@ impl<D: Dimension> Extended<D> {
             material: p.material.clone(),
             source: (0..n as u32).collect(),
             map: vec![D::Tensor::IDENTITY; n],
+            stress: state.stress.clone(),
         };
         let mut radius = support.to_vec();
         let mut ghosts: Vec<Ghost<D>> = Vec::new();
@@ -95,6 +103,17 @@ impl<D: Dimension> Extended<D> {
                 ext.source.push(ext.source[s]);
                 let composed = g.map.mul_tensor(&ext.map[s]);
                 ext.map.push(composed);
+                if !ext.stress.is_empty() {
+                    // A stress maps as a tensor: S' = M S Mᵀ with M the reflection in 3-D.
+                    let m = D::embed(&g.map)
+                        + sph_core::glam::DMat3::from_diagonal(sph_core::glam::DVec3::new(
+                            if D::DIM > 0 { 0.0 } else { 1.0 },
+                            if D::DIM > 1 { 0.0 } else { 1.0 },
+                            if D::DIM > 2 { 0.0 } else { 1.0 },
+                        ));
+                    let sm = m * ext.stress[s] * m.transpose();
+                    ext.stress.push(sm);
+                }
                 radius.push(radius[s]);
             }
         }

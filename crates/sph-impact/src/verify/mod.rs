@@ -3,6 +3,7 @@
 //!
 //! Run one with `sph-impact verify NAME [--resolution N] [--out DIR] [--json]`.
 
+mod elastic_bar;
 mod noh;
 mod outcome;
 mod radial;
@@ -33,11 +34,13 @@ pub enum Problem {
     Sedov2d,
     /// Spherical Sedov–Taylor blast in 3-D, γ = 5/3.
     Sedov3d,
+    /// Two elastic aluminium bars colliding at ±10 m/s (verification.md §10).
+    ElasticBar,
 }
 
 impl Problem {
     /// All problems, in documentation order.
-    pub const ALL: [Problem; 8] = [
+    pub const ALL: [Problem; 9] = [
         Problem::Sod,
         Problem::Toro123,
         Problem::Toro3,
@@ -46,6 +49,7 @@ impl Problem {
         Problem::NohSpherical,
         Problem::Sedov2d,
         Problem::Sedov3d,
+        Problem::ElasticBar,
     ];
 
     /// The command-line name.
@@ -59,6 +63,7 @@ impl Problem {
             Problem::NohSpherical => "noh-spherical",
             Problem::Sedov2d => "sedov-2d",
             Problem::Sedov3d => "sedov-3d",
+            Problem::ElasticBar => "elastic-bar",
         }
     }
 
@@ -75,6 +80,7 @@ impl Problem {
             Problem::NohSpherical => ("particles across the radius 1", 30),
             Problem::Sedov2d => ("particles across [-1, 1]", 200),
             Problem::Sedov3d => ("particles across [-1, 1]", 40),
+            Problem::ElasticBar => ("particles per bar", 100),
         }
     }
 
@@ -95,7 +101,11 @@ impl Problem {
         let mut s = crate::SchemeConfig::default();
         if matches!(
             self,
-            Problem::Sod | Problem::Toro123 | Problem::Toro3 | Problem::NohPlanar
+            Problem::Sod
+                | Problem::Toro123
+                | Problem::Toro3
+                | Problem::NohPlanar
+                | Problem::ElasticBar
         ) {
             s.n_target = 4.0;
         }
@@ -150,6 +160,7 @@ impl Problem {
             Problem::NohSpherical => noh::run_spherical(n, scheme),
             Problem::Sedov2d => sedov::run_2d(n, scheme),
             Problem::Sedov3d => sedov::run_3d(n, scheme),
+            Problem::ElasticBar => elastic_bar::run(n, scheme),
         }
     }
 }
