@@ -324,3 +324,27 @@ fn elastic_bars_carry_the_right_wave_and_separate() {
     assert!(o.get("rebound_kinetic_energy_ratio").unwrap() > 0.9);
     assert!(o.get("energy_change_relative").unwrap().abs() < 1e-12);
 }
+
+#[test]
+fn elastic_precursor_has_the_hel_amplitude_at_both_speeds() {
+    let o = Problem::HelImpact.run(None).unwrap();
+    println!("{:?}", o.metrics);
+    // verification.md §10: precursor amplitude within 3 % of σ_HEL = 0.5075 GPa at V = 400
+    // and 1000 m/s, travelling at c_L (here within 2 %, relative to the material).
+    for v in ["v400", "v1000"] {
+        assert!(
+            o.get(&format!("{v}_precursor_error_relative"))
+                .unwrap()
+                .abs()
+                < 0.03,
+            "{v}"
+        );
+        assert!(
+            o.get(&format!("{v}_precursor_speed_error_relative"))
+                .unwrap()
+                .abs()
+                < 0.02,
+            "{v}"
+        );
+    }
+}

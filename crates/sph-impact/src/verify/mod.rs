@@ -4,6 +4,7 @@
 //! Run one with `sph-impact verify NAME [--resolution N] [--out DIR] [--json]`.
 
 mod elastic_bar;
+mod hel_impact;
 mod noh;
 mod outcome;
 mod radial;
@@ -36,11 +37,13 @@ pub enum Problem {
     Sedov3d,
     /// Two elastic aluminium bars colliding at ±10 m/s (verification.md §10).
     ElasticBar,
+    /// Elastic–plastic planar impact of aluminium plates at 400 and 1000 m/s (§10).
+    HelImpact,
 }
 
 impl Problem {
     /// All problems, in documentation order.
-    pub const ALL: [Problem; 9] = [
+    pub const ALL: [Problem; 10] = [
         Problem::Sod,
         Problem::Toro123,
         Problem::Toro3,
@@ -50,6 +53,7 @@ impl Problem {
         Problem::Sedov2d,
         Problem::Sedov3d,
         Problem::ElasticBar,
+        Problem::HelImpact,
     ];
 
     /// The command-line name.
@@ -64,6 +68,7 @@ impl Problem {
             Problem::Sedov2d => "sedov-2d",
             Problem::Sedov3d => "sedov-3d",
             Problem::ElasticBar => "elastic-bar",
+            Problem::HelImpact => "hel-impact",
         }
     }
 
@@ -81,6 +86,7 @@ impl Problem {
             Problem::Sedov2d => ("particles across [-1, 1]", 200),
             Problem::Sedov3d => ("particles across [-1, 1]", 40),
             Problem::ElasticBar => ("particles per bar", 100),
+            Problem::HelImpact => ("particles per 0.4 m plate", 800),
         }
     }
 
@@ -106,6 +112,7 @@ impl Problem {
                 | Problem::Toro3
                 | Problem::NohPlanar
                 | Problem::ElasticBar
+                | Problem::HelImpact
         ) {
             s.n_target = 4.0;
         }
@@ -161,6 +168,7 @@ impl Problem {
             Problem::Sedov2d => sedov::run_2d(n, scheme),
             Problem::Sedov3d => sedov::run_3d(n, scheme),
             Problem::ElasticBar => elastic_bar::run(n, scheme),
+            Problem::HelImpact => hel_impact::run(n, scheme),
         }
     }
 }
