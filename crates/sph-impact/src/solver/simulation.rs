@@ -271,9 +271,10 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
             || !state.stress.is_empty();
         let shear_modulus = self.shear_moduli(state, &pressure);
         let correct = self.scheme.gradient_correction;
+        let correct_strain = self.scheme.strain_rate_correction && !state.stress.is_empty();
         let (grads, rates_out, t3) = if ext.h_tensor.is_empty() {
             let pk = ScalarPairKernel::new(self.kernel, &ext.h, D::DIM);
-            let g = need_grads.then(|| gradients(&ext, &list, &pk, correct));
+            let g = need_grads.then(|| gradients(&ext, &list, &pk, correct, correct_strain));
             let t3 = Instant::now();
             let r = rates(&ext, &list, &pk, g.as_deref(), &self.scheme, &shear_modulus);
             (g, r, t3)
@@ -283,7 +284,7 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
                 h_tensor: &ext.h_tensor,
                 h: &ext.h,
             };
-            let g = need_grads.then(|| gradients(&ext, &list, &pk, correct));
+            let g = need_grads.then(|| gradients(&ext, &list, &pk, correct, correct_strain));
             let t3 = Instant::now();
             let r = rates(&ext, &list, &pk, g.as_deref(), &self.scheme, &shear_modulus);
             (g, r, t3)

@@ -11,6 +11,7 @@ mod radial;
 mod sedov;
 mod setup;
 mod shock_tube;
+mod spin;
 
 pub use outcome::{Outcome, Profile};
 
@@ -39,11 +40,13 @@ pub enum Problem {
     ElasticBar,
     /// Elastic–plastic planar impact of aluminium plates at 400 and 1000 m/s (§10).
     HelImpact,
+    /// A spinning elastic disc: angular momentum over 1000 steps.
+    Spin,
 }
 
 impl Problem {
     /// All problems, in documentation order.
-    pub const ALL: [Problem; 10] = [
+    pub const ALL: [Problem; 11] = [
         Problem::Sod,
         Problem::Toro123,
         Problem::Toro3,
@@ -54,6 +57,7 @@ impl Problem {
         Problem::Sedov3d,
         Problem::ElasticBar,
         Problem::HelImpact,
+        Problem::Spin,
     ];
 
     /// The command-line name.
@@ -69,6 +73,7 @@ impl Problem {
             Problem::Sedov3d => "sedov-3d",
             Problem::ElasticBar => "elastic-bar",
             Problem::HelImpact => "hel-impact",
+            Problem::Spin => "spin",
         }
     }
 
@@ -87,6 +92,7 @@ impl Problem {
             Problem::Sedov3d => ("particles across [-1, 1]", 40),
             Problem::ElasticBar => ("particles per bar", 100),
             Problem::HelImpact => ("particles per 0.4 m plate", 800),
+            Problem::Spin => ("lattice spacings across the disc radius", 20),
         }
     }
 
@@ -169,6 +175,7 @@ impl Problem {
             Problem::Sedov3d => sedov::run_3d(n, scheme),
             Problem::ElasticBar => elastic_bar::run(n, scheme),
             Problem::HelImpact => hel_impact::run(n, scheme),
+            Problem::Spin => spin::run(n, scheme),
         }
     }
 }
