@@ -55,22 +55,34 @@ fn blob(walls: bool) -> Simulation<Dim2, WendlandC2> {
     .unwrap()
 }
 
+/// Runs `steps` steps; returns the conserved sums before and after, and Σ m|v| at the
+/// start (the momentum scale).
+fn run_steps(
+    sim: &mut Simulation<Dim2, WendlandC2>,
+    steps: usize,
+) -> (
+    sph_impact::Conserved<Dim2>,
+    sph_impact::Conserved<Dim2>,
+    f64,
+) {
+    let p = &sim.state.particles;
+    let scale: f64 = p
+        .mass
+        .iter()
+        .zip(&p.velocity)
+        .map(|(m, v)| m * v.length())
+        .sum();
+    let c0 = sim.conserved();
+    for _ in 0..steps {
+        sim.step(f64::INFINITY).unwrap();
+    }
+    (c0, sim.conserved(), scale)
+}
+
 #[test]
 fn momentum_is_conserved_to_round_off_without_boundaries() {
     let mut sim = blob(false);
-    let c0 = sim.conserved();
-    let scale: f64 = sim
-        .state
-        .particles
-        .mass
-        .iter()
-        .zip(&sim.state.particles.velocity)
-        .map(|(m, v)| m * v.length())
-        .sum();
-    for _ in 0..30 {
-        sim.step(f64::INFINITY).unwrap();
-    }
-    let c1 = sim.conserved();
+    let (c0, c1, scale) = run_steps(&mut sim, 30);
     let rel = (c1.momentum - c0.momentum).length() / scale;
     println!("momentum change / Σ m|v| after 30 steps: {rel:e}");
     assert!(rel < 1e-12, "{rel:e}");
@@ -80,19 +92,7 @@ fn momentum_is_conserved_to_round_off_without_boundaries() {
 #[test]
 fn momentum_balances_the_boundary_impulse() {
     let mut sim = blob(true);
-    let c0 = sim.conserved();
-    let scale: f64 = sim
-        .state
-        .particles
-        .mass
-        .iter()
-        .zip(&sim.state.particles.velocity)
-        .map(|(m, v)| m * v.length())
-        .sum();
-    for _ in 0..30 {
-        sim.step(f64::INFINITY).unwrap();
-    }
-    let c1 = sim.conserved();
+    let (c0, c1, scale) = run_steps(&mut sim, 30);
     let rel = (c1.momentum - c0.momentum - sim.boundary_impulse).length() / scale;
     println!(
         "(ΔP − wall impulse) / Σ m|v|: {rel:e}; impulse {:?}",
