@@ -357,3 +357,14 @@ fn spinning_disc_conserves_angular_momentum() {
     assert!(o.get("angular_momentum_change_max_relative").unwrap() < 1e-6);
     assert!(o.get("energy_change_relative").unwrap().abs() < 1e-12);
 }
+
+#[test]
+fn aluminium_into_basalt_matches_the_impedance_match() {
+    let o = Problem::Contact.run(None).unwrap();
+    println!("{:?}", o.metrics);
+    // Issue target: the planar shock pressure near the contact within 5 % of the Tillotson
+    // impedance match; no negative density.
+    assert!(o.get("pressure_error_relative").unwrap().abs() < 0.05);
+    assert!(o.get("contact_velocity_error_relative").unwrap().abs() < 0.05);
+    assert!(o.get("min_density_over_run").unwrap() > 0.0);
+}

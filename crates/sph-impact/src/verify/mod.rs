@@ -3,6 +3,7 @@
 //!
 //! Run one with `sph-impact verify NAME [--resolution N] [--out DIR] [--json]`.
 
+mod contact;
 mod elastic_bar;
 mod hel_impact;
 mod noh;
@@ -42,11 +43,13 @@ pub enum Problem {
     HelImpact,
     /// A spinning elastic disc: angular momentum over 1000 steps.
     Spin,
+    /// Aluminium into basalt at 3.9 km/s, planar, against the Tillotson impedance match.
+    Contact,
 }
 
 impl Problem {
     /// All problems, in documentation order.
-    pub const ALL: [Problem; 11] = [
+    pub const ALL: [Problem; 12] = [
         Problem::Sod,
         Problem::Toro123,
         Problem::Toro3,
@@ -58,6 +61,7 @@ impl Problem {
         Problem::ElasticBar,
         Problem::HelImpact,
         Problem::Spin,
+        Problem::Contact,
     ];
 
     /// The command-line name.
@@ -74,6 +78,7 @@ impl Problem {
             Problem::ElasticBar => "elastic-bar",
             Problem::HelImpact => "hel-impact",
             Problem::Spin => "spin",
+            Problem::Contact => "contact",
         }
     }
 
@@ -93,6 +98,7 @@ impl Problem {
             Problem::ElasticBar => ("particles per bar", 100),
             Problem::HelImpact => ("particles per 0.4 m plate", 800),
             Problem::Spin => ("lattice spacings across the disc radius", 20),
+            Problem::Contact => ("particles per 5 cm plate", 400),
         }
     }
 
@@ -119,6 +125,7 @@ impl Problem {
                 | Problem::NohPlanar
                 | Problem::ElasticBar
                 | Problem::HelImpact
+                | Problem::Contact
         ) {
             s.n_target = 4.0;
         }
@@ -176,6 +183,7 @@ impl Problem {
             Problem::ElasticBar => elastic_bar::run(n, scheme),
             Problem::HelImpact => hel_impact::run(n, scheme),
             Problem::Spin => spin::run(n, scheme),
+            Problem::Contact => contact::run(n, scheme),
         }
     }
 }
