@@ -20,7 +20,8 @@ struct Cli {
 enum Command {
     /// Run one verification problem and compare with its exact solution.
     Verify {
-        /// sod, toro123, toro3, noh-planar, noh-cylindrical, noh-spherical, sedov-2d, sedov-3d
+        /// sod, toro123, toro3, noh-planar, noh-cylindrical, noh-spherical, sedov-2d, sedov-3d,
+        /// elastic-bar, hel-impact, spin, contact
         problem: Problem,
         /// Resolution (problem-specific: see docs/verification.md).
         #[arg(long)]
