@@ -289,16 +289,7 @@ fn main() -> Result<(), Box<dyn Error>> {
         });
     }
     let materials = vec![Material::fluid("stiffened gas", gas)];
-    let walls = vec![
-        Boundary::Wall {
-            point: 0.0,
-            normal: 1.0,
-        },
-        Boundary::Wall {
-            point: 1.0,
-            normal: -1.0,
-        },
-    ];
+    let walls = Boundary::slab(0.0, 1.0);
     let kernel = scheme.kernel;
     let mut sim = Simulation::new(particles, materials, scheme, kernel, walls, None)?;
     let before = sim.conserved();

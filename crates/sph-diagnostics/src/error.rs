@@ -32,3 +32,30 @@ pub enum ExactError {
         reason: &'static str,
     },
 }
+
+/// Checks a geometry index `name` ∈ {1, 2, 3} (planar, cylindrical, spherical).
+pub(crate) fn check_geometry(name: &'static str, value: u32) -> Result<(), ExactError> {
+    if (1..=3).contains(&value) {
+        Ok(())
+    } else {
+        Err(ExactError::BadParameter {
+            name,
+            value: value as f64,
+            reason: "must be 1, 2 or 3",
+        })
+    }
+}
+
+/// Checks that each named value is positive and finite.
+pub(crate) fn check_positive(values: &[(&'static str, f64)]) -> Result<(), ExactError> {
+    for &(name, value) in values {
+        if !(value > 0.0 && value.is_finite()) {
+            return Err(ExactError::BadParameter {
+                name,
+                value,
+                reason: "must be positive and finite",
+            });
+        }
+    }
+    Ok(())
+}

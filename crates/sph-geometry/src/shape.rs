@@ -132,53 +132,28 @@ pub trait Shape<V: Vector>: Send + Sync {
     }
 }
 
-impl<V: Vector, S: Shape<V> + ?Sized> Shape<V> for &S {
-    #[inline]
-    fn contains(&self, p: V) -> bool {
-        (**self).contains(p)
-    }
-    fn bounds(&self) -> Option<Aabb<V>> {
-        (**self).bounds()
-    }
-    fn volume(&self) -> Option<f64> {
-        (**self).volume()
-    }
-    fn describe(&self) -> String {
-        (**self).describe()
-    }
+/// Shapes behind references and smart pointers are shapes (so `Box<dyn Shape<V>>` works).
+macro_rules! forward_shape {
+    ($($pointer:ty),*) => {$(
+        impl<V: Vector, S: Shape<V> + ?Sized> Shape<V> for $pointer {
+            #[inline]
+            fn contains(&self, p: V) -> bool {
+                (**self).contains(p)
+            }
+            fn bounds(&self) -> Option<Aabb<V>> {
+                (**self).bounds()
+            }
+            fn volume(&self) -> Option<f64> {
+                (**self).volume()
+            }
+            fn describe(&self) -> String {
+                (**self).describe()
+            }
+        }
+    )*};
 }
 
-impl<V: Vector, S: Shape<V> + ?Sized> Shape<V> for Box<S> {
-    #[inline]
-    fn contains(&self, p: V) -> bool {
-        (**self).contains(p)
-    }
-    fn bounds(&self) -> Option<Aabb<V>> {
-        (**self).bounds()
-    }
-    fn volume(&self) -> Option<f64> {
-        (**self).volume()
-    }
-    fn describe(&self) -> String {
-        (**self).describe()
-    }
-}
-
-impl<V: Vector, S: Shape<V> + ?Sized> Shape<V> for Arc<S> {
-    #[inline]
-    fn contains(&self, p: V) -> bool {
-        (**self).contains(p)
-    }
-    fn bounds(&self) -> Option<Aabb<V>> {
-        (**self).bounds()
-    }
-    fn volume(&self) -> Option<f64> {
-        (**self).volume()
-    }
-    fn describe(&self) -> String {
-        (**self).describe()
-    }
-}
+forward_shape!(&S, Box<S>, Arc<S>);
 
 /// Volume of the unit ball in `dim` dimensions: 2 (1-D), π (2-D), 4π/3 (3-D); the
 /// general π^(d/2)/Γ(d/2 + 1) through the recurrence V_d = 2π/d · V_(d−2).

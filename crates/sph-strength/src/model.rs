@@ -126,55 +126,35 @@ pub trait StrengthModel: Send + Sync + std::fmt::Debug {
     }
 }
 
-/// Forwarding so that `Box<dyn StrengthModel>` (and boxed concrete models) can be used
-/// wherever a `M: StrengthModel` is expected.
-impl<M: StrengthModel + ?Sized> StrengthModel for Box<M> {
-    fn name(&self) -> &str {
-        (**self).name()
-    }
-    #[inline]
-    fn shear_modulus(&self, s: &StrengthState) -> f64 {
-        (**self).shear_modulus(s)
-    }
-    #[inline]
-    fn intact_yield(&self, s: &StrengthState) -> f64 {
-        (**self).intact_yield(s)
-    }
-    #[inline]
-    fn yield_strength(&self, s: &StrengthState) -> f64 {
-        (**self).yield_strength(s)
-    }
-    fn has_strength(&self) -> bool {
-        (**self).has_strength()
-    }
-    #[inline]
-    fn evaluate(&self, s: &StrengthState) -> StrengthPoint {
-        (**self).evaluate(s)
-    }
+/// Forwarding so that `Box<dyn StrengthModel>` and `Arc<dyn StrengthModel>` (and boxed or
+/// shared concrete models) can be used wherever a `M: StrengthModel` is expected.
+macro_rules! forward_strength {
+    ($($pointer:ty),*) => {$(
+        impl<M: StrengthModel + ?Sized> StrengthModel for $pointer {
+            fn name(&self) -> &str {
+                (**self).name()
+            }
+            #[inline]
+            fn shear_modulus(&self, s: &StrengthState) -> f64 {
+                (**self).shear_modulus(s)
+            }
+            #[inline]
+            fn intact_yield(&self, s: &StrengthState) -> f64 {
+                (**self).intact_yield(s)
+            }
+            #[inline]
+            fn yield_strength(&self, s: &StrengthState) -> f64 {
+                (**self).yield_strength(s)
+            }
+            fn has_strength(&self) -> bool {
+                (**self).has_strength()
+            }
+            #[inline]
+            fn evaluate(&self, s: &StrengthState) -> StrengthPoint {
+                (**self).evaluate(s)
+            }
+        }
+    )*};
 }
 
-/// Forwarding for shared models (`Arc<dyn StrengthModel>`).
-impl<M: StrengthModel + ?Sized> StrengthModel for std::sync::Arc<M> {
-    fn name(&self) -> &str {
-        (**self).name()
-    }
-    #[inline]
-    fn shear_modulus(&self, s: &StrengthState) -> f64 {
-        (**self).shear_modulus(s)
-    }
-    #[inline]
-    fn intact_yield(&self, s: &StrengthState) -> f64 {
-        (**self).intact_yield(s)
-    }
-    #[inline]
-    fn yield_strength(&self, s: &StrengthState) -> f64 {
-        (**self).yield_strength(s)
-    }
-    fn has_strength(&self) -> bool {
-        (**self).has_strength()
-    }
-    #[inline]
-    fn evaluate(&self, s: &StrengthState) -> StrengthPoint {
-        (**self).evaluate(s)
-    }
-}
+forward_strength!(Box<M>, std::sync::Arc<M>);

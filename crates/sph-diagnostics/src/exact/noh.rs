@@ -4,7 +4,7 @@
 //! ρ2 = ρ0((γ+1)/(γ−1))^d, P2 = (γ−1)ρ2 e. Outside: v = −|v0|, e = 0,
 //! ρ = ρ0(1 + |v0|t/r)^(d−1).
 
-use crate::error::ExactError;
+use crate::error::{ExactError, check_geometry, check_positive};
 
 /// The Noh problem.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -35,25 +35,11 @@ pub struct RadialState {
 impl Noh {
     /// Validated problem.
     pub fn new(dim: u32, gamma: f64, rho0: f64, speed: f64) -> Result<Self, ExactError> {
-        if !(1..=3).contains(&dim) {
-            return Err(ExactError::BadParameter {
-                name: "dim",
-                value: dim as f64,
-                reason: "must be 1, 2 or 3",
-            });
-        }
+        check_geometry("dim", dim)?;
         if !(gamma > 1.0) {
             return Err(ExactError::BadGamma(gamma));
         }
-        for (name, value) in [("rho0", rho0), ("speed", speed)] {
-            if !(value > 0.0 && value.is_finite()) {
-                return Err(ExactError::BadParameter {
-                    name,
-                    value,
-                    reason: "must be positive and finite",
-                });
-            }
-        }
+        check_positive(&[("rho0", rho0), ("speed", speed)])?;
         Ok(Self {
             dim,
             gamma,

@@ -7,7 +7,7 @@
 //! the V with λ(V) = λ is found by bisection (λ is monotone in V). The energy integral
 //! α (E = α ρ0 R^(ν+2)/t²) gives ξ0 = α^(−1/(ν+2)) and R(t) = ξ0 (E t²/ρ0)^(1/(ν+2)).
 
-use crate::error::ExactError;
+use crate::error::{ExactError, check_geometry, check_positive};
 use crate::exact::noh::RadialState;
 
 /// The Sedov problem: geometry ν, γ, blast energy E and ambient density ρ0.
@@ -115,13 +115,7 @@ impl Sedov {
     /// the standard closed form; γ = 2 and above hit singular exponents), blast energy
     /// and ambient density.
     pub fn new(nu: u32, gamma: f64, energy: f64, rho0: f64) -> Result<Self, ExactError> {
-        if !(1..=3).contains(&nu) {
-            return Err(ExactError::BadParameter {
-                name: "nu",
-                value: nu as f64,
-                reason: "must be 1, 2 or 3",
-            });
-        }
+        check_geometry("nu", nu)?;
         if !(gamma > 1.0 && gamma < 2.0) {
             return Err(ExactError::BadParameter {
                 name: "gamma",
@@ -129,15 +123,7 @@ impl Sedov {
                 reason: "the closed form needs 1 < γ < 2",
             });
         }
-        for (name, value) in [("energy", energy), ("rho0", rho0)] {
-            if !(value > 0.0 && value.is_finite()) {
-                return Err(ExactError::BadParameter {
-                    name,
-                    value,
-                    reason: "must be positive and finite",
-                });
-            }
-        }
+        check_positive(&[("energy", energy), ("rho0", rho0)])?;
         let mut s = Self {
             nu,
             gamma,

@@ -133,23 +133,11 @@ impl MaterialSpec {
             }
             Some(BuiltinStrength::DruckerPrager(m)) => {
                 let p = m.params();
-                format!(
-                    "Y0 {} MPa, mu {}, Y_M {} MPa, mu_d {}",
-                    mpa(p.cohesion),
-                    p.friction,
-                    mpa(p.limit_strength),
-                    p.damaged_friction
-                )
+                frictional(p.cohesion, p.friction, p.limit_strength, p.damaged_friction)
             }
             Some(BuiltinStrength::Lundborg(m)) => {
                 let p = m.params();
-                format!(
-                    "Y0 {} MPa, mu {}, Y_M {} MPa, mu_d {}",
-                    mpa(p.cohesion),
-                    p.friction,
-                    mpa(p.limit_strength),
-                    p.damaged_friction
-                )
+                frictional(p.cohesion, p.friction, p.limit_strength, p.damaged_friction)
             }
             Some(BuiltinStrength::JohnsonCook(m)) => {
                 let p = m.params();
@@ -217,4 +205,16 @@ pub fn table(materials: &[MaterialSpec]) -> String {
         );
     }
     out
+}
+
+/// The parameters of a pressure-dependent (frictional) strength model.
+fn frictional(cohesion: f64, friction: f64, limit: f64, damaged_friction: f64) -> String {
+    let mpa = |v: f64| sig(v / 1e6, 4);
+    format!(
+        "Y0 {} MPa, mu {}, Y_M {} MPa, mu_d {}",
+        mpa(cohesion),
+        friction,
+        mpa(limit),
+        damaged_friction
+    )
 }

@@ -137,3 +137,19 @@ impl<D: Dimension> Boundary<D> {
         }
     }
 }
+
+impl Boundary<sph_core::Dim1> {
+    /// Reflecting walls at both ends of the 1-D interval [lo, hi], normals pointing in.
+    pub fn slab(lo: f64, hi: f64) -> Vec<Boundary<sph_core::Dim1>> {
+        vec![
+            Boundary::Wall {
+                point: lo,
+                normal: 1.0,
+            },
+            Boundary::Wall {
+                point: hi,
+                normal: -1.0,
+            },
+        ]
+    }
+}

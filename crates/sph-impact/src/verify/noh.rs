@@ -102,15 +102,7 @@ fn finish<D: Dimension>(
         .map(|s| (s.density, s.velocity, s.pressure, s.specific_energy))
         .collect();
 
-    let mut out = Outcome {
-        problem: name.to_string(),
-        ..Default::default()
-    };
-    out.set("particles", sim.state.particles.len() as f64);
-    out.set("resolution", n as f64);
-    out.set("t_end", T_END);
-    out.set("steps", steps as f64);
-    out.set("wall_time_s", wall);
+    let mut out = Outcome::for_run(name, sim.state.particles.len(), n, Some(T_END), steps, wall);
     let window = |k: usize| rad.r[k] >= 0.05 && rad.r[k] <= 0.35;
     rad.set_norms(&mut out, &ex, window, true);
     // Shock: the outermost crossing of the mid density, on radially binned data in 2-D/3-D.

@@ -49,6 +49,30 @@ pub struct Outcome {
 }
 
 impl Outcome {
+    /// An outcome with the run's bookkeeping metrics already set: particle count,
+    /// resolution, end time (when the problem has one), steps and wall time.
+    pub fn for_run(
+        problem: &str,
+        particles: usize,
+        resolution: usize,
+        t_end: Option<f64>,
+        steps: u64,
+        wall_time_s: f64,
+    ) -> Self {
+        let mut out = Outcome {
+            problem: problem.to_string(),
+            ..Default::default()
+        };
+        out.set("particles", particles as f64);
+        out.set("resolution", resolution as f64);
+        if let Some(t) = t_end {
+            out.set("t_end", t);
+        }
+        out.set("steps", steps as f64);
+        out.set("wall_time_s", wall_time_s);
+        out
+    }
+
     /// Records a metric.
     pub fn set(&mut self, key: &str, value: impl Into<Value>) {
         self.metrics.insert(key.to_string(), value.into());

@@ -83,15 +83,7 @@ fn run<D: Dimension>(
     let wall = wall.elapsed().as_secs_f64();
     let c1 = sim.conserved();
 
-    let mut out = Outcome {
-        problem: name.to_string(),
-        ..Default::default()
-    };
-    out.set("particles", sim.state.particles.len() as f64);
-    out.set("resolution", n as f64);
-    out.set("t_end", t_end);
-    out.set("steps", steps as f64);
-    out.set("wall_time_s", wall);
+    let mut out = Outcome::for_run(name, sim.state.particles.len(), n, Some(t_end), steps, wall);
     let mut worst: f64 = 0.0;
     for (k, (&t, &r)) in times.iter().zip(&radii).enumerate() {
         let re = exact.shock_radius(t);

@@ -87,16 +87,7 @@ pub(crate) fn run(tube: Tube, n: usize, sch: crate::SchemeConfig) -> Result<Outc
         ));
     }
     let walls = if s.walls {
-        vec![
-            Boundary::Wall {
-                point: 0.0,
-                normal: 1.0,
-            },
-            Boundary::Wall {
-                point: 1.0,
-                normal: -1.0,
-            },
-        ]
+        Boundary::slab(0.0, 1.0)
     } else {
         Vec::new()
     };
@@ -159,15 +150,7 @@ pub(crate) fn run(tube: Tube, n: usize, sch: crate::SchemeConfig) -> Result<Outc
     // [0, 1] minus what free ends let expand).
     let inside = |k: usize| x[k] > 0.0 && x[k] < 1.0;
 
-    let mut out = Outcome {
-        problem: s.name.to_string(),
-        ..Default::default()
-    };
-    out.set("particles", pa.len() as f64);
-    out.set("resolution", n as f64);
-    out.set("t_end", s.t_end);
-    out.set("steps", steps as f64);
-    out.set("wall_time_s", wall);
+    let mut out = Outcome::for_run(s.name, pa.len(), n, Some(s.t_end), steps, wall);
     for (name, num, exv) in [
         ("rho", &rho, &ex_rho),
         ("v", &v, &ex_v),
