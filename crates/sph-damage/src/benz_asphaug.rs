@@ -25,6 +25,11 @@
 //!   active (and failed) flaws times c_g/R_s.
 //! * [`GrowthLaw::SingleCrack`], f = 1 once any flaw is active: eq. dD^(1/3)/dt = c_g/R_s
 //!   of B&A 1994 as written for one crack per particle.
+//! * [`GrowthLaw::CrackVolume`], f = n_act^(1/p) for the integrated variable D^(1/p):
+//!   n_act cracks of radius a each damage n_act (a/R_s)^p, so D^(1/p) = n_act^(1/p) a/R_s
+//!   grows at n_act^(1/p) c_g/R_s. With n_act = k V_i ε^m and ε = ε̇t this gives
+//!   D ∝ k V_i c_g³ ε̇^m t^(m+3)/R_s³ in 3-D: the continuum Grady–Kipp law (Grady & Kipp
+//!   1980), hence σ_max ∝ ε̇^(3/(m+3)) while the cap n_act/n_tot is not reached.
 //!
 //! In every form the cap D ≤ n_act/n_tot holds (the solver applies it through
 //! [`crate::apply_bounds`]); the cap never falls below the current D, so damage does not
@@ -48,6 +53,9 @@ pub enum GrowthLaw {
     ActivatedFraction,
     /// d(D^(1/3))/dt = c_g/R_s once n_act ≥ 1 (B&A 1994, one crack per particle).
     SingleCrack,
+    /// d(D^(1/p))/dt = n_act^(1/p) c_g/R_s: the damaged volumes of the n_act cracks add
+    /// up (the Grady–Kipp continuum limit; module docs).
+    CrackVolume,
 }
 
 /// The crack speed as a fraction of the longitudinal wave speed used by Benz & Asphaug
@@ -269,6 +277,11 @@ impl DamageModel for BenzAsphaug {
                     0.0
                 }
             }
+            GrowthLaw::CrackVolume => match self.params.variable {
+                DamageVariable::Damage => n_act as f64,
+                DamageVariable::SquareRoot => (n_act as f64).sqrt(),
+                DamageVariable::CubeRoot => (n_act as f64).cbrt(),
+            },
         };
         let rate = if n_act == 0 { 0.0 } else { factor * growth };
         // Cap D ≤ n_act/n_tot, never below the current D (no healing).

@@ -188,6 +188,7 @@ fn benz_asphaug_peak_stress_against_strain_rate() {
         (GrowthLaw::PerActivatedFlaw, 0.2223),
         (GrowthLaw::ActivatedFraction, 0.4450),
         (GrowthLaw::SingleCrack, 0.4507),
+        (GrowthLaw::CrackVolume, 0.3727),
     ] {
         let (peaks, strains, slope) = sweep(law, n, v_i, rs);
         let row: Vec<String> = peaks

@@ -43,6 +43,10 @@ pub fn verify(
             serde_json::to_string_pretty(&outcome.metrics).map_err(|e| e.to_string())?,
         )?;
         crate::plot::profile_plot(&outcome, &dir.join("plot.png")).map_err(|e| e.to_string())?;
+        for p in &outcome.pictures {
+            let path = dir.join(format!("{}.png", p.name));
+            crate::plot::picture(p, &path).map_err(|e| format!("{}: {e}", path.display()))?;
+        }
     }
     Ok(())
 }

@@ -7,8 +7,27 @@
 //! with Δp the initial particle spacing (ε = 0.2, n = 4 in the study). R has the units of
 //! P/ρ², and F enters the momentum equation once per pair as
 //! dv_i/dt ∋ −Σ_j m_j F_ij ∇_i W_ij (repulsive between particles in tension).
+//!
+//! The tensor form (Gray, Monaghan & Swift 2001, eqs. 4.9–4.11) works on the principal
+//! values σ'_a of the total stress σ (tension positive): R'_a = −ε σ'_a/ρ² where σ'_a > 0,
+//! rotated back, R = V diag(R') Vᵀ, and dv_i/dt ∋ Σ_j m_j f_ij^n (R_i + R_j)·∇_i W_ij.
+//! It also acts on tension carried by the deviatoric stress (a bent plate, a stretched
+//! ring), which the pressure form cannot see. With σ = −P I both forms agree:
+//! R = −R_i^{scalar} I.
 
 use serde::{Deserialize, Serialize};
+use sph_core::{Tensor, Vector};
+
+/// Which stress the artificial stress reads.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum ArtificialStressForm {
+    /// The study's scalar form on the (damaged) pressure (paper §2.3).
+    #[default]
+    Pressure,
+    /// The tensor form on the principal values of the total stress (Gray et al. 2001).
+    Principal,
+}
 
 /// Parameters of the artificial stress.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
@@ -17,6 +36,9 @@ pub struct ArtificialStress {
     pub epsilon: f64,
     /// Exponent n (the study: 4).
     pub exponent: i32,
+    /// Scalar (pressure) or tensor (principal-stress) form.
+    #[serde(default)]
+    pub form: ArtificialStressForm,
 }
 
 impl Default for ArtificialStress {
@@ -24,6 +46,7 @@ impl Default for ArtificialStress {
         Self {
             epsilon: 0.2,
             exponent: 4,
+            form: ArtificialStressForm::Pressure,
         }
     }
 }
@@ -47,6 +70,37 @@ impl ArtificialStress {
             0.0
         } else {
             w_ratio.powi(self.exponent) * s
+        }
+    }
+
+    /// The tensor R of a particle in the sign convention of the tensor form (its pair term
+    /// is Σ_j m_j f^n (R_i + R_j)·∇_i W): `total_stress` is σ (tension positive), used by
+    /// the principal form; `pressure` is P (compression positive), used by the pressure
+    /// form, which returns −R_i I with R_i from [`Self::r`].
+    pub fn tensor<T: Tensor>(&self, total_stress: &T, pressure: f64, density: f64) -> T {
+        match self.form {
+            ArtificialStressForm::Pressure => T::IDENTITY * (-self.r(pressure, density)),
+            ArtificialStressForm::Principal => {
+                let e = total_stress.sym_eigen();
+                let n = T::Vector::DIM;
+                let scale = -self.epsilon / (density * density);
+                let r: Vec<f64> = (0..n)
+                    .map(|a| {
+                        let s = e.values[a];
+                        if s > 0.0 { scale * s } else { 0.0 }
+                    })
+                    .collect();
+                if r.iter().all(|&x| x == 0.0) {
+                    return T::ZERO;
+                }
+                let v = e.vectors;
+                T::from_fn(|a, b| {
+                    (0..n)
+                        .map(|k| v.component(a, k) * r[k] * v.component(b, k))
+                        .sum()
+                })
+                .symmetric()
+            }
         }
     }
 

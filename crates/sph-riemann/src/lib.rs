@@ -32,7 +32,7 @@ mod state;
 mod viscosity;
 mod wave_speed;
 
-pub use artificial_stress::ArtificialStress;
+pub use artificial_stress::{ArtificialStress, ArtificialStressForm};
 pub use hllc::{RiemannSolver, acoustic_star, hllc_star, hllc_star_with_speeds};
 pub use interface::{InterfaceCoupling, PairInterface, coupling_weight, interface_velocity};
 pub use limiter::{Limiter, reconstruct};

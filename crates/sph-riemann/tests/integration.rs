@@ -3,7 +3,7 @@
 
 use approx::assert_relative_eq;
 use proptest::prelude::*;
-use sph_core::glam::DVec3;
+use sph_core::glam::{DMat2, DVec2, DVec3};
 use sph_diagnostics::exact::{GasState, RiemannSolution};
 use sph_riemann::*;
 
@@ -243,15 +243,40 @@ fn artificial_stress_hand_computed() {
     let a = ArtificialStress {
         epsilon: 0.2,
         exponent: 4,
+        form: ArtificialStressForm::Pressure,
     };
     // P = −1 MPa, ρ = 1000: R = 0.2·1e6/1e6 = 0.2; compression gives 0.
     assert_relative_eq!(a.r(-1.0e6, 1000.0), 0.2, max_relative = 1e-15);
     assert_eq!(a.r(1.0e6, 1000.0), 0.0);
     assert_relative_eq!(a.f(0.2, 0.0, 0.5), 0.0125, max_relative = 1e-15);
+    // The pressure form as a tensor: −R I.
+    let t: DMat2 = a.tensor(&DMat2::ZERO, -1.0e6, 1000.0);
+    assert_eq!(t, DMat2::from_diagonal(DVec2::splat(-0.2)));
+    // The principal form on σ = diag(1 MPa, −3 MPa) rotated by 30°: only the tensile
+    // principal value acts, R = −0.2·1e6/1e6 along its direction.
+    let p = ArtificialStress {
+        form: ArtificialStressForm::Principal,
+        ..a
+    };
+    let (c, s) = (30f64.to_radians().cos(), 30f64.to_radians().sin());
+    let rot = DMat2::from_cols(DVec2::new(c, s), DVec2::new(-s, c));
+    let sigma = rot * DMat2::from_diagonal(DVec2::new(1.0e6, -3.0e6)) * rot.transpose();
+    let r: DMat2 = p.tensor(&sigma, 0.0, 1000.0);
+    let expect = rot * DMat2::from_diagonal(DVec2::new(-0.2, 0.0)) * rot.transpose();
+    for k in 0..4 {
+        assert_relative_eq!(
+            r.to_cols_array()[k],
+            expect.to_cols_array()[k],
+            epsilon = 1e-14
+        );
+    }
+    // Pure compression: nothing.
+    let none: DMat2 = p.tensor(&DMat2::from_diagonal(DVec2::new(-1.0, -2.0)), 0.0, 1000.0);
+    assert_eq!(none, DMat2::ZERO);
     assert!(
         ArtificialStress {
             epsilon: 0.0,
-            exponent: 4
+            ..ArtificialStress::default()
         }
         .is_off()
     );

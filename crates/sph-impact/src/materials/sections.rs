@@ -81,10 +81,11 @@ pub(crate) const TENSILE_FAILURES: [(&str, TensileFailure); 2] = [
 ];
 
 /// Names of [`GrowthLaw`] in material files.
-pub(crate) const GROWTH_LAWS: [(&str, GrowthLaw); 3] = [
+pub(crate) const GROWTH_LAWS: [(&str, GrowthLaw); 4] = [
     ("per-activated-flaw", GrowthLaw::PerActivatedFlaw),
     ("activated-fraction", GrowthLaw::ActivatedFraction),
     ("single-crack", GrowthLaw::SingleCrack),
+    ("crack-volume", GrowthLaw::CrackVolume),
 ];
 
 /// Names of [`LundborgTension`] in material files.

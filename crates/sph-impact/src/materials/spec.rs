@@ -158,20 +158,41 @@ impl MaterialSpec {
         (self.shear_modulus / self.density).sqrt()
     }
 
-    /// The solver's current, fluid-only [`Material`](crate::Material): the EOS under
-    /// this name. Strength, damage and thermal data are not carried over until the solver
-    /// adopts [`MaterialSpec`].
+    /// The material as a fluid: its EOS alone under this name (strength, damage and
+    /// thermal data dropped), for hydrodynamic runs.
     pub fn hydrodynamic_material(&self) -> crate::Material {
         crate::Material {
             name: self.name.clone(),
             eos: self.eos.shared(),
             strength: None,
             thermal: None,
+            damage: None,
         }
     }
 
-    /// The material for the solver with its strength model and thermal data (damage is
-    /// not yet carried by the solver).
+    /// The material of one body for the solver: [`Self::solver_material`] with the damage
+    /// model built for the body's particles (volumes m³, in the order the solver gets
+    /// them), seeding its flaws with `seed`, integrating `variable` (D^(1/3) for 3-D
+    /// cracks, D^(1/2) in 2-D).
+    pub fn body_material(
+        &self,
+        particle_volumes: &[f64],
+        seed: u64,
+        variable: sph_damage::DamageVariable,
+    ) -> Result<crate::Material, sph_damage::DamageError> {
+        let mut m = self.solver_material();
+        if self.damage != crate::materials::DamageSpec::None {
+            m.damage = Some(std::sync::Arc::new(self.damage.build_with_variable(
+                particle_volumes,
+                seed,
+                variable,
+            )?));
+        }
+        Ok(m)
+    }
+
+    /// The material for the solver with its strength model and thermal data; damage is
+    /// per body ([`Self::body_material`]).
     pub fn solver_material(&self) -> crate::Material {
         let strength: Option<std::sync::Arc<dyn sph_strength::StrengthModel>> = (!self.is_fluid())
             .then(|| {
@@ -183,6 +204,8 @@ impl MaterialSpec {
             eos: self.eos.shared(),
             strength,
             thermal: self.thermal,
+            // Damage belongs to a body (its flaws): see `DamageSpec::build`.
+            damage: None,
         }
     }
 

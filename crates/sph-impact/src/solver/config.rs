@@ -138,7 +138,7 @@ impl Default for SchemeConfig {
             viscosity_length_factor: 0.5,
             artificial_stress: ArtificialStress {
                 epsilon: 0.0,
-                exponent: 4,
+                ..ArtificialStress::default()
             },
             riemann: RiemannSolver::Acoustic,
             coupling: InterfaceCoupling::Study,

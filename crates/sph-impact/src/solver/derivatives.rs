@@ -156,11 +156,13 @@ pub(crate) fn rates<D: Dimension, P: PairKernel<D>>(
     grads: Option<&[Gradients<D>]>,
     scheme: &SchemeConfig,
     shear_modulus: &[f64],
+    intact_stress: &[sph_core::glam::DMat3],
 ) -> Vec<Rates<D>> {
     let visc = scheme.viscosity;
     let solid = !ext.stress.is_empty();
+    let damaged = !ext.damage.is_empty();
     let astress = scheme.artificial_stress;
-    let use_astress = !astress.is_off();
+    let use_astress = !ext.astress.is_empty();
     (0..ext.n_real)
         .into_par_iter()
         .map(|i| {
@@ -176,11 +178,6 @@ pub(crate) fn rates<D: Dimension, P: PairKernel<D>>(
                 D::project(&ext.stress[i])
             } else {
                 D::Tensor::ZERO
-            };
-            let ri = if use_astress {
-                astress.r(pi, rhoi)
-            } else {
-                0.0
             };
             let mut out = Rates {
                 drho: 0.0,
@@ -258,8 +255,8 @@ pub(crate) fn rates<D: Dimension, P: PairKernel<D>>(
                         r_hat,
                         right,
                         left,
-                        damage_i: 0.0,
-                        damage_j: 0.0,
+                        damage_i: if damaged { ext.damage[i] } else { 0.0 },
+                        damage_j: if damaged { ext.damage[j] } else { 0.0 },
                         same_material: mi_mat == ext.material[j],
                     },
                     scheme.riemann,
@@ -268,16 +265,19 @@ pub(crate) fn rates<D: Dimension, P: PairKernel<D>>(
 
                 let h_bar = scheme.viscosity_length_factor * 0.5 * (pk.h(i) + pk.h(j));
                 let pi_ij = visc.pi(vij, r, 0.5 * (rhoi + rhoj), 0.5 * (ci + cj), h_bar);
-                let a_ij = if use_astress {
-                    let rj = astress.r(pj, rhoj);
-                    if ri + rj > 0.0 {
+                // Artificial stress: m_j f_ij^n (R_i + R_j)·∇_i W (paper §2.3; R from the
+                // total stress, repulsive in tension).
+                let a_force = if use_astress {
+                    let r_sum = ext.astress[i] + ext.astress[j];
+                    if r_sum.double_dot(&r_sum) > 0.0 {
                         let dp = 0.5 * (ext.spacing0[i] + ext.spacing0[j]);
-                        astress.f(ri, rj, pk.w(i, j, r) / pk.w_at(i, j, r_hat, dp))
+                        let f = (pk.w(i, j, r) / pk.w_at(i, j, r_hat, dp)).powi(astress.exponent);
+                        r_sum.mul_vec(g) * (mj * f)
                     } else {
-                        0.0
+                        D::Vector::ZERO
                     }
                 } else {
-                    0.0
+                    D::Vector::ZERO
                 };
                 // The pressure part of the pair force: the particles' pressures (the
                 // study's σ_i + σ_j), or twice the pair's Riemann star pressure.
@@ -285,10 +285,11 @@ pub(crate) fn rates<D: Dimension, P: PairKernel<D>>(
                     MomentumForm::ParticlePressure => pi + pj,
                     MomentumForm::StarPressure => 2.0 * scheme.riemann.star(&left, &right).pressure,
                 };
-                let coef = -p_pair / (rhoi * rhoj) - pi_ij - a_ij;
-                // Pair force per unit mass of i: m_j[(σ_i + σ_j)/(ρ_iρ_j) − Π − A]∇W with
-                // σ = S − P I; symmetric in (i, j) up to the antisymmetric ∇W.
-                let mut force = g * (mj * coef);
+                let coef = -p_pair / (rhoi * rhoj) - pi_ij;
+                // Pair force per unit mass of i: m_j[(σ_i + σ_j)/(ρ_iρ_j) − Π]∇W + the
+                // artificial stress, with σ = (1 − D) S − P_D I; symmetric in (i, j) up to
+                // the antisymmetric ∇W.
+                let mut force = g * (mj * coef) + a_force;
                 if solid {
                     let sj = D::project(&ext.stress[j]);
                     force += (si + sj).mul_vec(g) * (mj / (rhoi * rhoj));
@@ -333,9 +334,8 @@ pub(crate) fn rates<D: Dimension, P: PairKernel<D>>(
                         } else {
                             0.0
                         };
-                        shear
-                            + mj * (2.0 * pi / (rhoi * rhoj) * dvs_plain
-                                + 0.5 * (pi_ij + a_ij) * vij.dot(g))
+                        shear + mj * (2.0 * pi / (rhoi * rhoj) * dvs_plain + 0.5 * pi_ij * vij.dot(g))
+                            - 0.5 * vij.dot(a_force)
                     }
                 };
             }
@@ -355,8 +355,9 @@ pub(crate) fn rates<D: Dimension, P: PairKernel<D>>(
                 && shear_modulus[i] > 0.0
                 && let Some(gr) = grads
             {
+                // The rate of the intact stress S (damage scales it only where it acts).
                 out.ds = sph_strength::jaumann_rate(
-                    &ext.stress[i],
+                    &intact_stress[i],
                     &D::embed(&gr[i].strain_velocity),
                     shear_modulus[i],
                 );

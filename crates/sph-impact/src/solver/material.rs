@@ -1,11 +1,17 @@
 //! The material table the solver reads: one entry per material id.
 
+use sph_damage::DamageModel;
 use sph_eos::{EquationOfState, ThermalModel};
 use sph_strength::StrengthModel;
 use std::sync::Arc;
 
 /// A material as the solver sees it: an EOS, and for a solid a strength model (with the
-/// thermal model its temperature comes from). Damage joins in the solid-dynamics work.
+/// thermal model its temperature comes from) and optionally a damage model.
+///
+/// A damage model with per-particle state (Benz–Asphaug flaws) belongs to one body: its
+/// particle index is the particle's rank among the particles of this material, in the
+/// order they are given to [`crate::Simulation::new`]. Two bodies of the same rock with
+/// their own flaws are two materials.
 #[derive(Clone, Debug)]
 pub struct Material {
     /// Name for messages and output.
@@ -17,6 +23,8 @@ pub struct Material {
     /// Temperature from specific energy (for temperature-dependent strength); `None`
     /// holds the temperature at 300 K.
     pub thermal: Option<ThermalModel>,
+    /// Damage model (paper §3.3); `None` for none. Only solids can be damaged.
+    pub damage: Option<Arc<dyn DamageModel>>,
 }
 
 impl Material {
@@ -27,6 +35,7 @@ impl Material {
             eos: Arc::new(eos),
             strength: None,
             thermal: None,
+            damage: None,
         }
     }
 
@@ -44,7 +53,14 @@ impl Material {
             eos: Arc::new(eos),
             strength,
             thermal: None,
+            damage: None,
         }
+    }
+
+    /// Adds a damage model.
+    pub fn with_damage(mut self, damage: impl DamageModel + 'static) -> Self {
+        self.damage = Some(Arc::new(damage));
+        self
     }
 
     /// Adds a thermal model.

@@ -2,6 +2,7 @@
 
 pub mod boundary;
 pub mod config;
+mod damage;
 mod derivatives;
 pub mod error;
 pub mod material;
@@ -11,6 +12,7 @@ pub mod state;
 pub mod timestep;
 
 pub use boundary::Boundary;
+pub use damage::DamageEvents;
 pub use config::{DensityForm, EnergyForm, MomentumForm, SchemeConfig, SmoothingMode};
 pub use error::SolverError;
 pub use material::Material;

@@ -3,6 +3,10 @@
 
 use crate::solver::boundary::Boundary;
 use crate::solver::config::{DensityForm, EnergyForm, SchemeConfig, SmoothingMode};
+use crate::solver::damage::{
+    DamageEvents, DamageRate, DamageStageInput, advance_damage, damage_of, damage_rates,
+    damaged_pressure,
+};
 use crate::solver::derivatives::{Gradients, Rates, gradients, rates, summation_density};
 use crate::solver::error::SolverError;
 use crate::solver::material::Material;
@@ -81,6 +85,8 @@ struct Stage<D: Dimension> {
     pressure: Vec<f64>,
     /// Shear modulus per particle (0 for fluids).
     shear_modulus: Vec<f64>,
+    /// Damage rates and bounds (empty without damage).
+    damage_rates: Vec<DamageRate>,
 }
 
 /// A running simulation.
@@ -98,6 +104,12 @@ pub struct Simulation<D: Dimension, K: Kernel> {
     /// Momentum delivered by the boundaries so far (ghost forces and particles mirrored
     /// back through walls): Σ m v(t) − Σ m v(0) equals this up to round-off.
     pub boundary_impulse: D::Vector,
+    /// What the damage bounds did so far (instant failures, caps at the active-flaw
+    /// fraction).
+    pub damage_events: DamageEvents,
+    /// Particles whose velocity is held at its value (a clamp, a driven end); empty
+    /// when none. See [`Self::hold_velocity`].
+    held: Vec<bool>,
     kernel: K,
     search: CellList,
 }
@@ -157,13 +169,17 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
         } else {
             (Vec::new(), Vec::new())
         };
+        let (damage_state, damage_index) = damage_setup(&particles, &materials)?;
         Ok(Self {
             state: State {
                 particles,
                 h_tensor,
                 spacing0,
                 stress,
+                plastic_strain_rate: plastic_strain.clone(),
                 plastic_strain,
+                damage_state,
+                damage_index,
                 time: 0.0,
                 step: 0,
             },
@@ -172,9 +188,47 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
             boundaries,
             timings: PhaseTimes::default(),
             boundary_impulse: D::Vector::ZERO,
+            damage_events: DamageEvents::default(),
+            held: Vec::new(),
             kernel,
             search: CellList::new(),
         })
+    }
+
+    /// Holds the velocity of the particles at `indices` at their current value for the
+    /// rest of the run (a clamp at zero velocity, or an end driven at constant speed):
+    /// they move with it and take part in every pair sum, but their own acceleration is
+    /// discarded. The force the constraint exerts is added to
+    /// [`Self::boundary_impulse`], so momentum still balances.
+    pub fn hold_velocity(
+        &mut self,
+        indices: impl IntoIterator<Item = usize>,
+    ) -> Result<(), SolverError> {
+        let n = self.state.particles.len();
+        if self.held.is_empty() {
+            self.held = vec![false; n];
+        }
+        for i in indices {
+            if i >= n {
+                return Err(SolverError::BadConfig {
+                    field: "hold_velocity",
+                    value: i as f64,
+                    reason: "particle index out of range",
+                });
+            }
+            self.held[i] = true;
+        }
+        Ok(())
+    }
+
+    /// Damage D of every particle (0 for particles without a damage model).
+    pub fn damage(&self) -> Vec<f64> {
+        let d = damage_of(&self.state, &self.materials);
+        if d.is_empty() {
+            vec![0.0; self.state.particles.len()]
+        } else {
+            d
+        }
     }
 
     /// Pressure and sound speed of every particle from its material's EOS.
@@ -215,6 +269,9 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
     fn stage(&mut self, state: &mut State<D>) -> Result<(Stage<D>, NeighborList), SolverError> {
         let t0 = Instant::now();
         let (mut pressure, mut sound_speed) = eos_pass(&state.particles, &self.materials);
+        let damage = damage_of(state, &self.materials);
+        // The pair terms see the damaged pressure P_D (paper §2).
+        let mut pressure_d = damaged_pressures(&pressure, &damage);
         let mut t1 = Instant::now();
         let support: Vec<f64> = if state.h_tensor.is_empty() {
             state.particles.smoothing_length.clone()
@@ -225,7 +282,14 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
                 .map(|h| 1.0 / h.sym_eigen().values[0])
                 .collect()
         };
-        let mut ext = Extended::build(state, &pressure, &sound_speed, &support, &self.boundaries);
+        let mut ext = Extended::build(
+            state,
+            &pressure_d,
+            &sound_speed,
+            &damage,
+            &support,
+            &self.boundaries,
+        );
         let list = if ext.h_tensor.is_empty() {
             self.search
                 .neighbors(&ext.position, &ScalarSupport::new(&ext.h)?)?
@@ -255,13 +319,17 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
             state.particles.density = rho;
             let t = Instant::now();
             (pressure, sound_speed) = eos_pass(&state.particles, &self.materials);
+            pressure_d = damaged_pressures(&pressure, &damage);
             t1 += t.elapsed();
             for k in 0..ext.position.len() {
                 let s = ext.source[k] as usize;
                 ext.density[k] = state.particles.density[s];
-                ext.pressure[k] = pressure[s];
+                ext.pressure[k] = pressure_d[s];
                 ext.sound_speed[k] = sound_speed[s];
             }
+        }
+        if !self.scheme.artificial_stress.is_off() {
+            ext.astress = artificial_stress_tensors(&ext, &self.scheme.artificial_stress);
         }
         let t2 = Instant::now();
         let need_grads = self.scheme.limiter != sph_riemann::Limiter::None
@@ -276,7 +344,15 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
             let pk = ScalarPairKernel::new(self.kernel, &ext.h, D::DIM);
             let g = need_grads.then(|| gradients(&ext, &list, &pk, correct, correct_strain));
             let t3 = Instant::now();
-            let r = rates(&ext, &list, &pk, g.as_deref(), &self.scheme, &shear_modulus);
+            let r = rates(
+                &ext,
+                &list,
+                &pk,
+                g.as_deref(),
+                &self.scheme,
+                &shear_modulus,
+                &state.stress,
+            );
             (g, r, t3)
         } else {
             let pk = TensorPairKernel {
@@ -286,9 +362,36 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
             };
             let g = need_grads.then(|| gradients(&ext, &list, &pk, correct, correct_strain));
             let t3 = Instant::now();
-            let r = rates(&ext, &list, &pk, g.as_deref(), &self.scheme, &shear_modulus);
+            let r = rates(
+                &ext,
+                &list,
+                &pk,
+                g.as_deref(),
+                &self.scheme,
+                &shear_modulus,
+                &state.stress,
+            );
             (g, r, t3)
         };
+        let spacing: Vec<f64> = if damage.is_empty() {
+            Vec::new()
+        } else {
+            (0..state.particles.len())
+                .map(|i| self.spacing(state, i))
+                .collect()
+        };
+        let damage_rates = damage_rates(
+            state,
+            &self.materials,
+            &DamageStageInput {
+                stress: &ext.stress[..ext.stress.len().min(ext.n_real)],
+                pressure: &pressure_d,
+                sound_speed: &sound_speed,
+                shear_modulus: &shear_modulus,
+                damage: &damage,
+                spacing: &spacing,
+            },
+        );
         let t4 = Instant::now();
         self.timings.eos += (t1 - t0).as_secs_f64();
         self.timings.neighbours += (t2 - t1).as_secs_f64();
@@ -300,8 +403,9 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
                 rates: rates_out,
                 grads,
                 sound_speed,
-                pressure,
+                pressure: pressure_d,
                 shear_modulus,
+                damage_rates,
             },
             list,
         ))
@@ -346,6 +450,15 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
         let t0 = Instant::now();
         let mut half = s0_state.clone();
         self.advance(&mut half, &s0_state, &s0, 0.5 * dt);
+        if !half.damage_state.is_empty() {
+            advance_damage(
+                &mut half,
+                &s0_state.damage_state,
+                &self.materials,
+                &s0.damage_rates,
+                0.5 * dt,
+            );
+        }
         self.timings.integration += t0.elapsed().as_secs_f64();
         let (s1, _) = self.stage(&mut half)?;
         let t1 = Instant::now();
@@ -353,6 +466,12 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
         // x_{n+1} = x_n + dt v_{1/2}; the other fields with the midpoint rates.
         let v_half = half.particles.velocity.clone();
         self.advance_with_velocity(&mut next, &v_half, &s1, dt, &half);
+        if !next.damage_state.is_empty() {
+            let s_start = next.damage_state.clone();
+            let ev = advance_damage(&mut next, &s_start, &self.materials, &s1.damage_rates, dt);
+            self.damage_events.raised_to_min += ev.raised_to_min;
+            self.damage_events.capped_at_max += ev.capped_at_max;
+        }
         // The midpoint stage's ghost forces act over the whole step (v_{n+1} = v_n + dt a_½).
         let m = &next.particles.mass;
         let impulse = s1
@@ -361,6 +480,12 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
             .zip(m)
             .fold(D::Vector::ZERO, |acc, (r, &mi)| acc + r.dv_boundary * mi);
         self.boundary_impulse += impulse * dt;
+        // A held particle's discarded acceleration is the constraint's force on it:
+        // −m_i a_i, applied over the step (the sum above counted the ghost part of a_i,
+        // which the held particle does not feel either).
+        for (i, _) in self.held.iter().enumerate().filter(|(_, h)| **h) {
+            self.boundary_impulse -= s1.rates[i].dv * (m[i] * dt);
+        }
         let mut corrections = 0;
         for i in 0..next.particles.len() {
             for b in &self.boundaries {
@@ -412,6 +537,9 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
             .par_iter_mut()
             .zip(&stage.rates)
             .for_each(|(v, r)| *v += r.dv * dt);
+        for (i, _) in self.held.iter().enumerate().filter(|(_, h)| **h) {
+            p.velocity[i] = v_old[i];
+        }
         // ρ ← ρ exp(dt (dρ/dt)/ρ_rate): first-order equal to the linear update, but a
         // density can never change sign, however violent the expansion.
         let rho_rate = &rate_state.particles.density;
@@ -502,6 +630,11 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
             .map_or(300.0, |t| t.temperature(p.specific_energy[i]));
         let mut st = sph_strength::StrengthState::new(pressure, p.density[i], temperature);
         st.plastic_strain = s.plastic_strain.get(i).copied().unwrap_or(0.0);
+        st.plastic_strain_rate = s.plastic_strain_rate.get(i).copied().unwrap_or(0.0);
+        st.damage = match (&m.damage, s.damage_state.get(i)) {
+            (Some(model), Some(&x)) => model.variable().to_damage(x),
+            _ => 0.0,
+        };
         st
     }
 
@@ -526,11 +659,11 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
     /// yield surface at the stage's pressure; the plastic strain grows by
     /// (√(3J2_trial) − Y)/(3G) (Wilkins 1964).
     fn update_stress(&self, y: &mut State<D>, stage: &Stage<D>, dt: f64) {
-        let updated: Vec<(sph_core::glam::DMat3, f64)> = (0..y.particles.len())
+        let updated: Vec<(sph_core::glam::DMat3, f64, f64)> = (0..y.particles.len())
             .into_par_iter()
             .map(|i| {
                 let Some(model) = &self.materials[y.particles.material[i] as usize].strength else {
-                    return (sph_core::glam::DMat3::ZERO, y.plastic_strain[i]);
+                    return (sph_core::glam::DMat3::ZERO, y.plastic_strain[i], 0.0);
                 };
                 let trial = y.stress[i] + stage.rates[i].ds * dt;
                 let st = self.strength_state(y, i, stage.pressure[i]);
@@ -538,12 +671,13 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
                 let dep = ret
                     .plastic_strain_increment(stage.shear_modulus[i])
                     .unwrap_or(0.0);
-                (ret.stress, y.plastic_strain[i] + dep)
+                (ret.stress, y.plastic_strain[i] + dep, dep / dt)
             })
             .collect();
-        for (i, (s, ep)) in updated.into_iter().enumerate() {
+        for (i, (s, ep, rate)) in updated.into_iter().enumerate() {
             y.stress[i] = s;
             y.plastic_strain[i] = ep;
+            y.plastic_strain_rate[i] = rate;
         }
     }
 
@@ -596,6 +730,78 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
     pub fn kernel(&self) -> &K {
         &self.kernel
     }
+}
+
+/// Checks damage models (solids only, flaw counts) and numbers each particle within its
+/// material for the model's per-particle state. Empty vectors when no material has
+/// damage.
+fn damage_setup<D: Dimension>(
+    particles: &Particles<D>,
+    materials: &[Material],
+) -> Result<(Vec<f64>, Vec<u32>), SolverError> {
+    if materials.iter().all(|m| m.damage.is_none()) {
+        return Ok((Vec::new(), Vec::new()));
+    }
+    let mut count = vec![0u32; materials.len()];
+    let index: Vec<u32> = particles
+        .material
+        .iter()
+        .map(|&m| {
+            let k = count[m as usize];
+            count[m as usize] += 1;
+            k
+        })
+        .collect();
+    for (m, mat) in materials.iter().enumerate() {
+        if let Some(model) = &mat.damage {
+            if mat.strength.is_none() {
+                return Err(SolverError::Material(format!(
+                    "material {m} ({}): a damage model needs a strength model (only solids \
+                     can be damaged)",
+                    mat.name
+                )));
+            }
+            model.check_particles(count[m] as usize).map_err(|e| {
+                SolverError::Material(format!(
+                    "material {m} ({}): damage model does not fit its {} particles: {e}",
+                    mat.name, count[m]
+                ))
+            })?;
+        }
+    }
+    Ok((vec![0.0; particles.len()], index))
+}
+
+/// P_D of every particle (P itself without damage).
+fn damaged_pressures(pressure: &[f64], damage: &[f64]) -> Vec<f64> {
+    if damage.is_empty() {
+        return pressure.to_vec();
+    }
+    pressure
+        .iter()
+        .zip(damage)
+        .map(|(&p, &d)| damaged_pressure(p, d))
+        .collect()
+}
+
+/// The artificial-stress tensor R of every particle, ghosts included, from its total
+/// stress σ = (1 − D) S − P_D I (paper §2.3).
+fn artificial_stress_tensors<D: Dimension>(
+    ext: &Extended<D>,
+    a: &sph_riemann::ArtificialStress,
+) -> Vec<D::Tensor> {
+    (0..ext.position.len())
+        .into_par_iter()
+        .map(|k| {
+            let p = ext.pressure[k];
+            let sigma = if ext.stress.is_empty() {
+                D::Tensor::IDENTITY * (-p)
+            } else {
+                D::project(&ext.stress[k]) - D::Tensor::IDENTITY * p
+            };
+            a.tensor(&sigma, p, ext.density[k])
+        })
+        .collect()
 }
 
 /// P and c of every particle.

@@ -18,6 +18,15 @@ pub struct State<D: Dimension> {
     pub stress: Vec<sph_core::glam::DMat3>,
     /// Equivalent plastic strain; empty when no material has strength.
     pub plastic_strain: Vec<f64>,
+    /// Equivalent plastic strain rate (1/s) of the last step, for rate-dependent strength
+    /// (Johnson–Cook); empty when no material has strength.
+    pub plastic_strain_rate: Vec<f64>,
+    /// The damage model's integrated variable s = D^(1/p) (paper §3.3; sph-damage's
+    /// [`sph_damage::DamageVariable`]), per particle; empty when no material has damage.
+    pub damage_state: Vec<f64>,
+    /// Each particle's index in its material's damage model (its flaws), fixed at set-up;
+    /// empty when no material has damage.
+    pub damage_index: Vec<u32>,
     /// Simulated time (s).
     pub time: f64,
     /// Completed steps.
@@ -43,18 +52,25 @@ pub(crate) struct Extended<D: Dimension> {
     /// For ghosts: the map from the source's vectors to the ghost's (reflection or
     /// identity); identity for real particles.
     pub map: Vec<D::Tensor>,
-    /// Deviatoric stress (empty without strength); ghosts carry M S Mᵀ.
+    /// Damaged deviatoric stress (1 − D) S (empty without strength); ghosts carry M S Mᵀ.
     pub stress: Vec<sph_core::glam::DMat3>,
+    /// Damage D (empty without damage).
+    pub damage: Vec<f64>,
+    /// Artificial-stress tensor R (empty when the artificial stress is off).
+    pub astress: Vec<D::Tensor>,
 }
 
 impl<D: Dimension> Extended<D> {
     /// Copies the real particles and appends the ghosts of every boundary, each
     /// boundary seeing the real particles and the ghosts made before it (so corners
     /// of two periodic axes are filled).
+    /// `pressure` is the damaged pressure P_D and `damage` the damage D of each real
+    /// particle (empty without damage); the stress is stored as (1 − D) S.
     pub fn build(
         state: &State<D>,
         pressure: &[f64],
         sound_speed: &[f64],
+        damage: &[f64],
         support: &[f64],
         boundaries: &[Boundary<D>],
     ) -> Self {
@@ -74,7 +90,18 @@ impl<D: Dimension> Extended<D> {
             material: p.material.clone(),
             source: (0..n as u32).collect(),
             map: vec![D::Tensor::IDENTITY; n],
-            stress: state.stress.clone(),
+            stress: if damage.is_empty() {
+                state.stress.clone()
+            } else {
+                state
+                    .stress
+                    .iter()
+                    .zip(damage)
+                    .map(|(s, d)| *s * (1.0 - d))
+                    .collect()
+            },
+            damage: damage.to_vec(),
+            astress: Vec::new(),
         };
         let mut radius = support.to_vec();
         let mut ghosts: Vec<Ghost<D>> = Vec::new();
@@ -113,6 +140,9 @@ impl<D: Dimension> Extended<D> {
                         ));
                     let sm = m * ext.stress[s] * m.transpose();
                     ext.stress.push(sm);
+                }
+                if !ext.damage.is_empty() {
+                    ext.damage.push(ext.damage[s]);
                 }
                 radius.push(radius[s]);
             }

@@ -32,6 +32,35 @@ impl Profile {
     }
 }
 
+/// One panel of a [`Picture`]: particle clouds and curves on shared axes.
+#[derive(Clone, Debug, Default)]
+pub struct Panel {
+    /// Panel title.
+    pub title: String,
+    /// Axis labels (x, y).
+    pub labels: (String, String),
+    /// Particle clouds: (label, x, y).
+    pub points: Vec<(String, Vec<f64>, Vec<f64>)>,
+    /// Curves: (label, x, y).
+    pub lines: Vec<(String, Vec<f64>, Vec<f64>)>,
+    /// Same scale on both axes (particle snapshots).
+    pub equal_aspect: bool,
+}
+
+/// A figure a problem is judged by by eye (particle snapshots, histories), written by
+/// `sph-impact verify --out DIR` as `DIR/<name>.png`.
+#[derive(Clone, Debug, Default)]
+pub struct Picture {
+    /// File stem.
+    pub name: String,
+    /// Figure title.
+    pub title: String,
+    /// Panels, laid out in a grid of `columns` columns.
+    pub panels: Vec<Panel>,
+    /// Grid columns.
+    pub columns: usize,
+}
+
 /// Metrics, the profile, and exact curves for plotting.
 #[derive(Clone, Debug, Default, Serialize)]
 pub struct Outcome {
@@ -46,6 +75,9 @@ pub struct Outcome {
     /// plot, as (field, points).
     #[serde(skip)]
     pub exact: Vec<(String, Vec<(f64, f64)>)>,
+    /// Further pictures (snapshots, histories).
+    #[serde(skip)]
+    pub pictures: Vec<Picture>,
 }
 
 impl Outcome {

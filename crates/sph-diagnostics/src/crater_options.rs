@@ -1,0 +1,138 @@
+//! Parameters of the crater measurement (docs/diagnostics.md §4): radial bins, which
+//! target particles count as wall, and the thresholds that define the crater and its
+//! central bowl.
+
+use crate::error::{ImpactError, finite, positive};
+use crate::particles_view::Geometry;
+use serde::{Deserialize, Serialize};
+
+/// Material whose density fell below `min_fraction × reference_density` is not wall:
+/// fully comminuted, dilated rubble would be swept out of a real crater before it is
+/// measured.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct DensityCut {
+    /// Reference density ρ_ref (kg/m³), e.g. the target's initial density.
+    pub reference_density: f64,
+    /// Fraction of ρ_ref below which a particle is excluded (dimensionless, in (0, 1]).
+    pub min_fraction: f64,
+}
+
+/// How [`crater_profile`](crate::crater_profile::crater_profile) bins and filters and how
+/// [`measure_crater`](crate::crater::measure_crater) reads the profile.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct CraterOptions {
+    /// 3-D (radius √(x²+y²)) or RZ (radius |x|).
+    pub geometry: Geometry,
+    /// Radial bin width (m); default the particle spacing near the impact point.
+    pub bin: f64,
+    /// A bin is crater when its depth exceeds this (m); default one particle spacing, so
+    /// the particle-scale roughness of an undisturbed surface is not crater.
+    pub depth_threshold: f64,
+    /// The central bowl is where the depth is at least this fraction of the crater depth
+    /// (dimensionless, in (0, 1]; default 0.5): the steep-walled pit inside the shallow
+    /// spall zone, whose floor lies well below half the maximum depth.
+    pub bowl_fraction: f64,
+    /// Height of the original surface above the centres of the top particle layer (m,
+    /// default 0): depth is measured from `surface_z − top_offset`, so that an untouched
+    /// bed reads zero. Use Δp/2 for a lattice whose top layer sits half a spacing down.
+    pub top_offset: f64,
+    /// Optional low-density cut (needs densities in the view).
+    pub density_cut: Option<DensityCut>,
+    /// Optional: particles with damage above this are not wall (needs damage in the view).
+    /// Default `None`: a crater is where material was *removed*, and damaged rock still in
+    /// place is still there (the study's damaged-but-intact walls, paper §7).
+    pub max_damage: Option<f64>,
+}
+
+impl CraterOptions {
+    /// Default fraction of the crater depth that defines the bowl.
+    pub const DEFAULT_BOWL_FRACTION: f64 = 0.5;
+
+    /// Defaults for particle spacing `spacing` (m): bin and depth threshold = spacing,
+    /// bowl fraction 0.5, no offset, no density or damage cut.
+    pub fn new(geometry: Geometry, spacing: f64) -> Self {
+        Self {
+            geometry,
+            bin: spacing,
+            depth_threshold: spacing,
+            bowl_fraction: Self::DEFAULT_BOWL_FRACTION,
+            top_offset: 0.0,
+            density_cut: None,
+            max_damage: None,
+        }
+    }
+
+    /// Checks every parameter's range.
+    pub fn check(&self) -> Result<(), ImpactError> {
+        positive("bin", self.bin)?;
+        finite("depth_threshold", self.depth_threshold)?;
+        finite("top_offset", self.top_offset)?;
+        if !(self.bowl_fraction > 0.0 && self.bowl_fraction <= 1.0) {
+            return Err(ImpactError::BadParameter {
+                name: "bowl_fraction",
+                value: self.bowl_fraction,
+                reason: "must be in (0, 1]",
+            });
+        }
+        if let Some(cut) = self.density_cut {
+            positive("reference_density", cut.reference_density)?;
+            if !(cut.min_fraction > 0.0 && cut.min_fraction <= 1.0) {
+                return Err(ImpactError::BadParameter {
+                    name: "min_fraction",
+                    value: cut.min_fraction,
+                    reason: "must be in (0, 1]",
+                });
+            }
+        }
+        if let Some(d) = self.max_damage
+            && !(0.0..=1.0).contains(&d)
+        {
+            return Err(ImpactError::BadParameter {
+                name: "max_damage",
+                value: d,
+                reason: "must be in [0, 1]",
+            });
+        }
+        Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn defaults_and_range_checks() {
+        let o = CraterOptions::new(Geometry::ThreeD, 5e-4);
+        assert_eq!(
+            (o.bin, o.depth_threshold, o.bowl_fraction),
+            (5e-4, 5e-4, 0.5)
+        );
+        assert_eq!(o.check(), Ok(()));
+        let bad = [
+            CraterOptions { bin: 0.0, ..o },
+            CraterOptions {
+                bowl_fraction: 0.0,
+                ..o
+            },
+            CraterOptions {
+                top_offset: f64::NAN,
+                ..o
+            },
+            CraterOptions {
+                max_damage: Some(1.5),
+                ..o
+            },
+            CraterOptions {
+                density_cut: Some(DensityCut {
+                    reference_density: 2876.0,
+                    min_fraction: 0.0,
+                }),
+                ..o
+            },
+        ];
+        for b in bad {
+            assert!(b.check().is_err(), "{b:?}");
+        }
+    }
+}
