@@ -8,11 +8,14 @@ mod elastic_bar;
 mod hel_impact;
 mod noh;
 mod outcome;
+mod plate;
 mod radial;
+mod rings;
 mod sedov;
 mod setup;
 mod shock_tube;
 mod spin;
+mod taylor;
 mod tensile_bar;
 
 pub use outcome::{Outcome, Panel, Picture, Profile};
@@ -46,13 +49,19 @@ pub enum Problem {
     Spin,
     /// Aluminium into basalt at 3.9 km/s, planar, against the Tillotson impedance match.
     Contact,
+    /// The elastic oscillating plate (2-D cantilever, verification.md §4).
+    Plate,
+    /// Colliding rubber rings (2-D, verification.md §5).
+    Rings,
+    /// Taylor bar: copper rod on a rigid anvil at 227 m/s (3-D quarter, §6a).
+    Taylor,
     /// A basalt bar with Benz–Asphaug flaws pulled at 1e2…1e6 s⁻¹ (verification.md §7).
     TensileBar,
 }
 
 impl Problem {
     /// All problems, in documentation order.
-    pub const ALL: [Problem; 13] = [
+    pub const ALL: [Problem; 16] = [
         Problem::Sod,
         Problem::Toro123,
         Problem::Toro3,
@@ -65,6 +74,9 @@ impl Problem {
         Problem::HelImpact,
         Problem::Spin,
         Problem::Contact,
+        Problem::Plate,
+        Problem::Rings,
+        Problem::Taylor,
         Problem::TensileBar,
     ];
 
@@ -83,6 +95,9 @@ impl Problem {
             Problem::HelImpact => "hel-impact",
             Problem::Spin => "spin",
             Problem::Contact => "contact",
+            Problem::Plate => "plate",
+            Problem::Rings => "rings",
+            Problem::Taylor => "taylor",
             Problem::TensileBar => "tensile-bar",
         }
     }
@@ -104,6 +119,9 @@ impl Problem {
             Problem::HelImpact => ("particles per 0.4 m plate", 800),
             Problem::Spin => ("lattice spacings across the disc radius", 20),
             Problem::Contact => ("particles per 5 cm plate", 400),
+            Problem::Plate => ("particles across the plate's thickness", 10),
+            Problem::Rings => ("particles across each ring's wall", 10),
+            Problem::Taylor => ("lattice spacings across the rod's radius", 8),
             Problem::TensileBar => ("particles along the 50 mm bar", 100),
         }
     }
@@ -195,6 +213,9 @@ impl Problem {
             Problem::HelImpact => hel_impact::run(n, scheme),
             Problem::Spin => spin::run(n, scheme),
             Problem::Contact => contact::run(n, scheme),
+            Problem::Plate => plate::run(n, scheme),
+            Problem::Rings => rings::run(n, scheme),
+            Problem::Taylor => taylor::run(n, scheme),
             Problem::TensileBar => tensile_bar::run(n, scheme),
         }
     }

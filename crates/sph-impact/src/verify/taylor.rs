@@ -1,0 +1,182 @@
+//! Taylor bar (verification.md §6a; Wilkins & Guinan 1973 geometry): a copper rod,
+//! L0 = 32.4 mm, R0 = 3.2 mm, hits a rigid frictionless anvil at 227 m/s. ρ = 8930 kg/m³,
+//! E = 117 GPa, ν = 0.35 (K = 130 GPa, G = 43.33 GPa; linear elastic EOS), von Mises
+//! Y = 400 MPa with linear hardening H = 100 MPa; t_end = 80 µs. Reference (FE spread):
+//! L_f = 21.42–21.66 mm, R_f = 7.02–7.24 mm; targets 21.5 mm and 7.1 mm.
+//!
+//! 3-D quarter model: the anvil z = 0 and the symmetry planes x = 0 and y = 0 are
+//! reflecting walls (ghosts), the rod a cubic lattice with `n` spacings across R0.
+//! Measured: L_f = the largest z, R_f = the largest distance from the axis among the
+//! particles within one spacing of the anvil (the particle centres plus half a spacing:
+//! the material edge), the largest plastic strain, and KE(t).
+
+use super::outcome::{Outcome, Panel, Picture, Profile};
+use super::setup::simulation;
+use crate::{Boundary, Material, SchemeConfig, SolverError};
+use sph_core::glam::DVec3;
+use sph_core::{Dim3, ParticleInit, Particles};
+use sph_eos::{LinearElastic, LinearElasticParams};
+use sph_geometry::{Cylinder, cubic_lattice};
+use sph_strength::{VonMises, VonMisesParams, von_mises::LinearHardening};
+
+const RHO: f64 = 8930.0;
+const E_YOUNG: f64 = 117.0e9;
+const NU: f64 = 0.35;
+const LENGTH: f64 = 32.4e-3;
+const RADIUS: f64 = 3.2e-3;
+const SPEED: f64 = 227.0;
+const T_END: f64 = 80.0e-6;
+
+/// Runs with `n` lattice spacings across the rod's radius.
+pub(crate) fn run(n: usize, scheme: SchemeConfig) -> Result<Outcome, SolverError> {
+    let bad = |e: String| SolverError::Material(e);
+    let bulk = E_YOUNG / (3.0 * (1.0 - 2.0 * NU));
+    let shear = E_YOUNG / (2.0 * (1.0 + NU));
+    let eos = LinearElastic::new(LinearElasticParams {
+        rho0: RHO,
+        K0: bulk,
+    })
+    .map_err(|e| bad(e.to_string()))?;
+    let strength = VonMises::new(VonMisesParams {
+        yield_strength: 400.0e6,
+        shear_modulus: shear,
+        hardening: Some(LinearHardening { modulus: 100.0e6 }),
+    })
+    .map_err(|e| bad(e.to_string()))?;
+    let dx = RADIUS / n as f64;
+    let rod = Cylinder::new(DVec3::ZERO, DVec3::Z, RADIUS, LENGTH).map_err(|e| bad(e.to_string()))?;
+    let body = cubic_lattice(&rod, dx, RHO).map_err(|e| bad(e.to_string()))?;
+    let mut p = Particles::<Dim3>::new();
+    for (x, m) in body.positions.iter().zip(&body.masses) {
+        // The quarter x > 0, y > 0 (the lattice is offset by half a spacing from the
+        // axis, so no particle lies on a symmetry plane).
+        if x.x > 0.0 && x.y > 0.0 {
+            p.push(ParticleInit {
+                position: *x,
+                velocity: DVec3::new(0.0, 0.0, -SPEED),
+                mass: *m,
+                density: RHO,
+                specific_energy: 0.0,
+                smoothing_length: scheme.n_target * dx,
+                material: 0,
+            });
+        }
+    }
+    let z_min0 = p.position.iter().fold(f64::INFINITY, |a, x| a.min(x.z));
+    // Walls: the anvil just below the rod's face (half a spacing below the lowest
+    // particle centres: where the material surface is), and the symmetry planes.
+    let walls = vec![
+        Boundary::Wall {
+            point: DVec3::new(0.0, 0.0, z_min0 - 0.5 * dx),
+            normal: DVec3::Z,
+        },
+        Boundary::Wall {
+            point: DVec3::ZERO,
+            normal: DVec3::X,
+        },
+        Boundary::Wall {
+            point: DVec3::ZERO,
+            normal: DVec3::Y,
+        },
+    ];
+    let count = p.len();
+    let mut sim = simulation(
+        p,
+        vec![Material::solid("copper (bilinear)", eos, strength)],
+        scheme,
+        walls,
+        Some(vec![dx; count]),
+    )?;
+    let anvil = z_min0 - 0.5 * dx;
+    let ke0 = sim.conserved().kinetic;
+    let wall = std::time::Instant::now();
+    let (mut times, mut ke) = (vec![0.0], vec![ke0]);
+    let mut steps = 0;
+    let samples = 80;
+    for k in 1..=samples {
+        steps += sim.run_until(T_END * k as f64 / samples as f64, |_, _| {})?;
+        times.push(sim.state.time);
+        ke.push(sim.conserved().kinetic);
+    }
+    let p = &sim.state.particles;
+    let z_top = p.position.iter().fold(f64::NEG_INFINITY, |a, x| a.max(x.z));
+    let length = z_top + 0.5 * dx - anvil;
+    let face_radius = p
+        .position
+        .iter()
+        .filter(|x| x.z < anvil + dx)
+        .map(|x| (x.x * x.x + x.y * x.y).sqrt())
+        .fold(0.0, f64::max)
+        + 0.5 * dx;
+    let (mut ep_max, mut ep_at) = (0.0f64, DVec3::ZERO);
+    for (i, &ep) in sim.state.plastic_strain.iter().enumerate() {
+        if ep > ep_max {
+            ep_max = ep;
+            ep_at = p.position[i];
+        }
+    }
+    let mut out = Outcome::for_run(
+        "taylor",
+        p.len(),
+        n,
+        Some(T_END),
+        steps,
+        wall.elapsed().as_secs_f64(),
+    );
+    out.set("final_length_mm", length * 1e3);
+    out.set("final_length_error_relative", length / 21.5e-3 - 1.0);
+    out.set("face_radius_mm", face_radius * 1e3);
+    out.set("face_radius_error_relative", face_radius / 7.1e-3 - 1.0);
+    out.set("plastic_strain_max", ep_max);
+    out.set("plastic_strain_max_radius_mm", ep_at.truncate().length() * 1e3);
+    out.set("plastic_strain_max_height_mm", (ep_at.z - anvil) * 1e3);
+    out.set("kinetic_energy_final_over_initial", ke.last().unwrap_or(&f64::NAN) / ke0);
+    // Quarter model: the full rod's KE0 is four times the quarter's.
+    out.set("kinetic_energy_initial_full_rod_j", 4.0 * ke0);
+    // Profile: the particles' radius, height and plastic strain at the end.
+    let mut rows: Vec<Vec<f64>> = (0..p.len())
+        .map(|i| {
+            let x = p.position[i];
+            vec![
+                (x.x * x.x + x.y * x.y).sqrt(),
+                x.z - anvil,
+                sim.state.plastic_strain[i],
+            ]
+        })
+        .collect();
+    rows.sort_by(|a, b| a[0].total_cmp(&b[0]));
+    let (r, z): (Vec<f64>, Vec<f64>) = rows.iter().map(|row| (row[0] * 1e3, row[1] * 1e3)).unzip();
+    out.profile = Profile {
+        columns: ["r", "z", "plastic_strain"].map(String::from).to_vec(),
+        rows,
+    };
+    out.pictures.push(Picture {
+        name: "taylor".into(),
+        title: format!(
+            "Taylor bar: L_f = {:.2} mm (21.5), R_f = {:.2} mm (7.1)",
+            length * 1e3,
+            face_radius * 1e3
+        ),
+        panels: vec![
+            Panel {
+                title: "final shape (all particles, r against z)".into(),
+                labels: ("r (mm)".into(), "z (mm)".into()),
+                points: vec![("particles".into(), r, z)],
+                equal_aspect: true,
+                ..Default::default()
+            },
+            Panel {
+                title: "kinetic energy (quarter rod)".into(),
+                labels: ("t (µs)".into(), "KE (J)".into()),
+                lines: vec![(
+                    "SPH".into(),
+                    times.iter().map(|t| t * 1e6).collect(),
+                    ke,
+                )],
+                ..Default::default()
+            },
+        ],
+        columns: 2,
+    });
+    Ok(out)
+}
