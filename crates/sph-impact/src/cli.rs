@@ -88,3 +88,154 @@ fn merge(into: &mut serde_json::Value, patch: serde_json::Value) {
         (slot, v) => *slot = v,
     }
 }
+
+/// A command's failure and the process exit code it maps to: 2 for bad input (the
+/// scene, the options), 1 for a run that failed.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[error("{message}")]
+pub struct CommandError {
+    /// The exit code.
+    pub code: u8,
+    /// One line saying what went wrong.
+    pub message: String,
+}
+
+impl CommandError {
+    /// Exit code for bad input.
+    pub const BAD_INPUT: u8 = 2;
+    /// Exit code for a failed run.
+    pub const FAILED: u8 = 1;
+
+    /// A bad-input error.
+    pub fn bad_input(message: impl std::fmt::Display) -> Self {
+        Self {
+            code: Self::BAD_INPUT,
+            message: message.to_string(),
+        }
+    }
+
+    /// A failed-run error.
+    pub fn failed(message: impl std::fmt::Display) -> Self {
+        Self {
+            code: Self::FAILED,
+            message: message.to_string(),
+        }
+    }
+}
+
+/// The run directory: `--out`, else the scene's `[output] directory`, else
+/// `out/<scene file stem>`.
+pub fn run_directory(
+    scene_path: &Path,
+    scene: &crate::scene::Scene,
+    out: Option<&Path>,
+) -> std::path::PathBuf {
+    if let Some(o) = out {
+        return o.to_owned();
+    }
+    if let Some(d) = &scene.output.directory {
+        return d.into();
+    }
+    let stem = scene_path
+        .file_stem()
+        .map_or_else(|| "run".into(), |s| s.to_string_lossy().into_owned());
+    Path::new("out").join(stem)
+}
+
+/// `sph-impact run SCENE`: reads the scene, runs it into the run directory and prints
+/// the main results (unless `options.quiet`).
+pub fn run_scene(
+    scene_path: &Path,
+    out: Option<&Path>,
+    options: &crate::run::RunOptions,
+) -> Result<crate::run::RunSummary, CommandError> {
+    let scene = crate::scene::Scene::from_toml_file(scene_path).map_err(CommandError::bad_input)?;
+    let dir = run_directory(scene_path, &scene, out);
+    let summary = crate::run::run(&scene, &dir, options).map_err(|e| {
+        if e.is_bad_input() {
+            CommandError::bad_input(e)
+        } else {
+            CommandError::failed(e)
+        }
+    })?;
+    if !options.quiet {
+        println!("run directory        {}", dir.display());
+        println!(
+            "crater diameter      {:.2} mm (bowl {:.2} mm), depth {:.2} mm",
+            summary.crater_diameter_m * 1e3,
+            summary.bowl_diameter_m * 1e3,
+            summary.crater_depth_m * 1e3
+        );
+        println!(
+            "beta                 {:.4} (from the target: {:.4}); ejecta {:.4e} kg",
+            summary.beta, summary.beta_target, summary.ejecta_mass_kg
+        );
+        println!(
+            "cost                 {} particles, {} steps, {:.1} s wall, {:.3e} particle-steps/s",
+            summary.particles, summary.steps, summary.wall_time_s, summary.particle_steps_per_s
+        );
+    }
+    Ok(summary)
+}
+
+/// `sph-impact check SCENE`: validates the scene, places its bodies and prints per body
+/// the particle count, mass and ρ·V, and the estimated first dt, steps, runtime and
+/// memory (as text or one JSON object).
+pub fn check_scene(
+    scene_path: &Path,
+    json: bool,
+    threads: Option<usize>,
+    resolution_scale: f64,
+    end_time: Option<f64>,
+) -> Result<crate::scene::CheckReport, CommandError> {
+    let scene = crate::scene::Scene::from_toml_file(scene_path).map_err(CommandError::bad_input)?;
+    let threads = threads.unwrap_or_else(rayon::current_num_threads);
+    let report = scene
+        .check_report(resolution_scale, threads, end_time)
+        .map_err(CommandError::bad_input)?;
+    if json {
+        println!(
+            "{}",
+            serde_json::to_string(&report).map_err(CommandError::failed)?
+        );
+    } else {
+        print!("{}", report.to_text());
+    }
+    Ok(report)
+}
+
+/// `sph-impact materials`: the built-in materials as a Markdown table, or with `json`
+/// one JSON array with every parameter (the material's TOML form as an object).
+pub fn materials(json: bool) -> Result<(), CommandError> {
+    let lib = crate::materials::library();
+    if !json {
+        print!("{}", crate::materials::table(&lib));
+        println!("\n`sph-impact materials --json` lists every parameter and its source.");
+        return Ok(());
+    }
+    let mut out = Vec::new();
+    for m in &lib {
+        let toml_text = m.to_toml().map_err(CommandError::failed)?;
+        let parameters: toml::Table = toml::from_str(&toml_text).map_err(CommandError::failed)?;
+        out.push(serde_json::json!({
+            "name": m.name,
+            "density_kg_m3": m.density,
+            "shear_modulus_pa": m.shear_modulus,
+            "bulk_modulus_pa": m.bulk_modulus(),
+            "youngs_modulus_pa": m.youngs_modulus(),
+            "poisson_ratio": m.poisson_ratio(),
+            "longitudinal_wave_speed_m_s": m.longitudinal_wave_speed(),
+            "eos": sph_eos::EquationOfState::name(&m.eos),
+            "strength": sph_strength::StrengthModel::name(&m.strength),
+            "damage": m.damage.name(),
+            "key_parameters": m.key_parameters(),
+            "parameters": parameters,
+            "sources": m.sources,
+        }));
+    }
+    println!(
+        "{}",
+        serde_json::to_string_pretty(&out).map_err(CommandError::failed)?
+    );
+    Ok(())
+}

@@ -8,12 +8,19 @@
 //! **Status:** fluid dynamics (ideal gas and any `EquationOfState`). Strength, damage,
 //! scenes, impact diagnostics and the full command-line program follow.
 //!
+//! Impact runs: [`scene`] reads a TOML scene (or builds one in Rust) and turns it into a
+//! [`Simulation`]; [`run`] steps it to the end time and writes snapshots, history, summary
+//! and plots (docs/scenes.md); the `sph-impact` program's `run`, `check` and `materials`
+//! commands are in [`cli`].
+//!
 //! ## Feature flags
 //! None.
 
 pub mod cli;
 pub mod materials;
 pub mod plot;
+pub mod run;
+pub mod scene;
 pub mod solver;
 pub mod verify;
 

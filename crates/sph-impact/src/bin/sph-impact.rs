@@ -1,6 +1,11 @@
 //! The `sph-impact` command-line program.
+//!
+//! Exit codes: 0 ok, 1 a failed run, 2 bad input (a bad scene, option or argument);
+//! every failure prints one line `error: …` on standard error.
 
 use clap::{Parser, Subcommand};
+use sph_impact::cli::CommandError;
+use sph_impact::run::RunOptions;
 use sph_impact::verify::Problem;
 use std::path::PathBuf;
 use std::process::ExitCode;
@@ -18,6 +23,45 @@ struct Cli {
 
 #[derive(Subcommand, Debug)]
 enum Command {
+    /// Run an impact scene (TOML; docs/scenes.md) and write snapshots, history,
+    /// summary and plots into the run directory.
+    Run {
+        /// The scene file.
+        scene: PathBuf,
+        /// Run directory (default: the scene's [output] directory, else out/<scene name>).
+        #[arg(long)]
+        out: Option<PathBuf>,
+        /// Simulated end time in seconds, instead of the scene's.
+        #[arg(long)]
+        end_time: Option<f64>,
+        /// Divide every particle spacing by this (2 = twice as fine, 0.5 = twice as coarse).
+        #[arg(long, default_value_t = 1.0)]
+        resolution_scale: f64,
+        /// No progress bar and no result lines (for scripts).
+        #[arg(long)]
+        quiet: bool,
+    },
+    /// Validate a scene, place its bodies, and estimate the run's first time step, steps,
+    /// runtime and memory.
+    Check {
+        /// The scene file.
+        scene: PathBuf,
+        /// Print one JSON object.
+        #[arg(long)]
+        json: bool,
+        /// Divide every particle spacing by this.
+        #[arg(long, default_value_t = 1.0)]
+        resolution_scale: f64,
+        /// Simulated end time in seconds, instead of the scene's.
+        #[arg(long)]
+        end_time: Option<f64>,
+    },
+    /// List the built-in materials and their parameters.
+    Materials {
+        /// Print one JSON array with every parameter and source.
+        #[arg(long)]
+        json: bool,
+    },
     /// Run one verification problem and compare with its exact solution.
     Verify {
         /// sod, toro123, toro3, noh-planar, noh-cylindrical, noh-spherical, sedov-2d, sedov-3d,
@@ -47,27 +91,46 @@ fn main() -> ExitCode {
             .build_global()
     {
         eprintln!("error: cannot start {t} threads: {e}");
-        return ExitCode::from(2);
+        return ExitCode::from(CommandError::BAD_INPUT);
     }
-    match cli.command {
+    let result = match cli.command {
+        Command::Run {
+            scene,
+            out,
+            end_time,
+            resolution_scale,
+            quiet,
+        } => {
+            let options = RunOptions {
+                threads: cli.threads,
+                end_time,
+                resolution_scale,
+                quiet,
+            };
+            sph_impact::cli::run_scene(&scene, out.as_deref(), &options).map(|_| ())
+        }
+        Command::Check {
+            scene,
+            json,
+            resolution_scale,
+            end_time,
+        } => sph_impact::cli::check_scene(&scene, json, cli.threads, resolution_scale, end_time)
+            .map(|_| ()),
+        Command::Materials { json } => sph_impact::cli::materials(json),
         Command::Verify {
             problem,
             resolution,
             scheme,
             out,
             json,
-        } => match sph_impact::cli::verify(
-            problem,
-            resolution,
-            scheme.as_deref(),
-            out.as_deref(),
-            json,
-        ) {
-            Ok(()) => ExitCode::SUCCESS,
-            Err(e) => {
-                eprintln!("error: {e}");
-                ExitCode::FAILURE
-            }
-        },
+        } => sph_impact::cli::verify(problem, resolution, scheme.as_deref(), out.as_deref(), json)
+            .map_err(CommandError::failed),
+    };
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("error: {e}");
+            ExitCode::from(e.code)
+        }
     }
 }

@@ -334,7 +334,8 @@ pub(crate) fn rates<D: Dimension, P: PairKernel<D>>(
                         } else {
                             0.0
                         };
-                        shear + mj * (2.0 * pi / (rhoi * rhoj) * dvs_plain + 0.5 * pi_ij * vij.dot(g))
+                        shear
+                            + mj * (2.0 * pi / (rhoi * rhoj) * dvs_plain + 0.5 * pi_ij * vij.dot(g))
                             - 0.5 * vij.dot(a_force)
                     }
                 };

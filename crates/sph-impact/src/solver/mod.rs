@@ -12,8 +12,8 @@ pub mod state;
 pub mod timestep;
 
 pub use boundary::Boundary;
-pub use damage::DamageEvents;
 pub use config::{DensityForm, EnergyForm, MomentumForm, SchemeConfig, SmoothingMode};
+pub use damage::DamageEvents;
 pub use error::SolverError;
 pub use material::Material;
 pub use simulation::{Conserved, PhaseTimes, Simulation, StepInfo};

@@ -282,10 +282,15 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
                 .map(|h| 1.0 / h.sym_eigen().values[0])
                 .collect()
         };
+        // A solid's signal speed in the pair's Riemann problem and viscosity is the
+        // longitudinal wave speed c_L = √(c² + 4G/(3ρ)) (paper §2.1).
+        let mut shear_modulus = self.shear_moduli(state, &pressure);
+        let mut signal =
+            longitudinal_speeds(&sound_speed, &shear_modulus, &state.particles.density);
         let mut ext = Extended::build(
             state,
             &pressure_d,
-            &sound_speed,
+            &signal,
             &damage,
             &support,
             &self.boundaries,
@@ -320,12 +325,14 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
             let t = Instant::now();
             (pressure, sound_speed) = eos_pass(&state.particles, &self.materials);
             pressure_d = damaged_pressures(&pressure, &damage);
+            shear_modulus = self.shear_moduli(state, &pressure);
+            signal = longitudinal_speeds(&sound_speed, &shear_modulus, &state.particles.density);
             t1 += t.elapsed();
             for k in 0..ext.position.len() {
                 let s = ext.source[k] as usize;
                 ext.density[k] = state.particles.density[s];
                 ext.pressure[k] = pressure_d[s];
-                ext.sound_speed[k] = sound_speed[s];
+                ext.sound_speed[k] = signal[s];
             }
         }
         if !self.scheme.artificial_stress.is_off() {
@@ -337,7 +344,6 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
             || self.scheme.gradient_correction
             || self.scheme.grad_h
             || !state.stress.is_empty();
-        let shear_modulus = self.shear_moduli(state, &pressure);
         let correct = self.scheme.gradient_correction;
         let correct_strain = self.scheme.strain_rate_correction && !state.stress.is_empty();
         let (grads, rates_out, t3) = if ext.h_tensor.is_empty() {
@@ -770,6 +776,22 @@ fn damage_setup<D: Dimension>(
         }
     }
     Ok((vec![0.0; particles.len()], index))
+}
+
+/// c_L = √(c² + 4G/(3ρ)) of every particle (c itself for fluids).
+fn longitudinal_speeds(sound_speed: &[f64], shear_modulus: &[f64], density: &[f64]) -> Vec<f64> {
+    sound_speed
+        .iter()
+        .zip(shear_modulus)
+        .zip(density)
+        .map(|((&c, &g), &rho)| {
+            if g > 0.0 {
+                (c * c + 4.0 * g / (3.0 * rho)).sqrt()
+            } else {
+                c
+            }
+        })
+        .collect()
 }
 
 /// P_D of every particle (P itself without damage).

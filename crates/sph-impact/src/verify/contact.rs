@@ -41,6 +41,12 @@ fn impedance_match(al: &Tillotson, ba: &Tillotson) -> Result<(f64, f64), SolverE
 
 /// Runs with `n` particles per plate (plates 5 cm long).
 pub(crate) fn run(n: usize, scheme: SchemeConfig) -> Result<Outcome, SolverError> {
+    // The 3-D part keeps the solver's n_target (the 1-D default of 4 is for this planar
+    // part only) unless the caller changed it from 4.
+    let mut sphere_scheme = scheme.clone();
+    if sphere_scheme.n_target == 4.0 {
+        sphere_scheme.n_target = SchemeConfig::default().n_target;
+    }
     let bad = |e: sph_eos::EosError| SolverError::Material(e.to_string());
     let al = Tillotson::new(TillotsonParams::aluminium_study()).map_err(bad)?;
     let ba = Tillotson::new(TillotsonParams::basalt_study()).map_err(bad)?;
@@ -136,6 +142,23 @@ pub(crate) fn run(n: usize, scheme: SchemeConfig) -> Result<Outcome, SolverError
     out.set("particles", pa.len() as f64);
     out.set("resolution", n as f64);
     out.set("wall_time_s", wall.elapsed().as_secs_f64());
+    // The 3-D sphere into a block with the study's full material models, 12 spacings
+    // across the sphere (the study's 0.5 mm).
+    let sc = super::contact3d::run(12, sphere_scheme)?;
+    out.set("sphere_particles", sc.particles as f64);
+    out.set("sphere_steps", sc.steps as f64);
+    out.set("sphere_t_end", sc.t_end);
+    out.set("sphere_min_density_ratio", sc.min_density_ratio);
+    out.set("sphere_dt_first", sc.dt_first);
+    out.set("sphere_dt_min", sc.dt_min);
+    out.set("sphere_dt_last", sc.dt_last);
+    out.set("sphere_peak_pressure_contact", sc.peak_pressure);
+    out.set(
+        "sphere_peak_pressure_over_impedance_match",
+        sc.peak_pressure / p_match,
+    );
+    out.set("sphere_target_fully_damaged_fraction", sc.damaged_fraction);
+    out.set("sphere_wall_time_s", sc.wall_time_s);
     let v: Vec<f64> = idx.iter().map(|&i| pa.velocity[i]).collect();
     let rho: Vec<f64> = idx.iter().map(|&i| pa.density[i]).collect();
     out.profile = Profile {

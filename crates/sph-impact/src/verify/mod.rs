@@ -4,6 +4,7 @@
 //! Run one with `sph-impact verify NAME [--resolution N] [--out DIR] [--json]`.
 
 mod contact;
+mod contact3d;
 mod elastic_bar;
 mod hel_impact;
 mod noh;

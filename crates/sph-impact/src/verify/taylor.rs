@@ -44,7 +44,8 @@ pub(crate) fn run(n: usize, scheme: SchemeConfig) -> Result<Outcome, SolverError
     })
     .map_err(|e| bad(e.to_string()))?;
     let dx = RADIUS / n as f64;
-    let rod = Cylinder::new(DVec3::ZERO, DVec3::Z, RADIUS, LENGTH).map_err(|e| bad(e.to_string()))?;
+    let rod =
+        Cylinder::new(DVec3::ZERO, DVec3::Z, RADIUS, LENGTH).map_err(|e| bad(e.to_string()))?;
     let body = cubic_lattice(&rod, dx, RHO).map_err(|e| bad(e.to_string()))?;
     let mut p = Particles::<Dim3>::new();
     for (x, m) in body.positions.iter().zip(&body.masses) {
@@ -128,9 +129,15 @@ pub(crate) fn run(n: usize, scheme: SchemeConfig) -> Result<Outcome, SolverError
     out.set("face_radius_mm", face_radius * 1e3);
     out.set("face_radius_error_relative", face_radius / 7.1e-3 - 1.0);
     out.set("plastic_strain_max", ep_max);
-    out.set("plastic_strain_max_radius_mm", ep_at.truncate().length() * 1e3);
+    out.set(
+        "plastic_strain_max_radius_mm",
+        ep_at.truncate().length() * 1e3,
+    );
     out.set("plastic_strain_max_height_mm", (ep_at.z - anvil) * 1e3);
-    out.set("kinetic_energy_final_over_initial", ke.last().unwrap_or(&f64::NAN) / ke0);
+    out.set(
+        "kinetic_energy_final_over_initial",
+        ke.last().unwrap_or(&f64::NAN) / ke0,
+    );
     // Quarter model: the full rod's KE0 is four times the quarter's.
     out.set("kinetic_energy_initial_full_rod_j", 4.0 * ke0);
     // Profile: the particles' radius, height and plastic strain at the end.
@@ -168,11 +175,7 @@ pub(crate) fn run(n: usize, scheme: SchemeConfig) -> Result<Outcome, SolverError
             Panel {
                 title: "kinetic energy (quarter rod)".into(),
                 labels: ("t (µs)".into(), "KE (J)".into()),
-                lines: vec![(
-                    "SPH".into(),
-                    times.iter().map(|t| t * 1e6).collect(),
-                    ke,
-                )],
+                lines: vec![("SPH".into(), times.iter().map(|t| t * 1e6).collect(), ke)],
                 ..Default::default()
             },
         ],

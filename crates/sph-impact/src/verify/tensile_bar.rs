@@ -49,8 +49,8 @@ fn peak(n: usize, rate: f64, scheme: &SchemeConfig) -> Result<(f64, f64, f64, u6
     let volume = dx * SIDE * SIDE;
     let params = BenzAsphaugParams::new(WeibullParams::BASALT_BA99, SEED)
         .with_variable(DamageVariable::CubeRoot);
-    let flaws = BenzAsphaug::seed_with_volumes(params, &vec![volume; n])
-        .map_err(|e| bad(e.to_string()))?;
+    let flaws =
+        BenzAsphaug::seed_with_volumes(params, &vec![volume; n]).map_err(|e| bad(e.to_string()))?;
     let hold = scheme.n_target.ceil() as usize + 1;
     let mut p = Particles::<Dim1>::new();
     let mut held = Vec::new();
@@ -129,7 +129,10 @@ pub(crate) fn run(n: usize, scheme: SchemeConfig) -> Result<Outcome, SolverError
         peaks.push(sigma);
         steps += k;
         rows.push(vec![rate, sigma, eps, d_max]);
-        out.set(&format!("peak_stress_rate_1e{}", rate.log10().round()), sigma);
+        out.set(
+            &format!("peak_stress_rate_1e{}", rate.log10().round()),
+            sigma,
+        );
     }
     let m = WeibullParams::BASALT_BA99.m();
     let exponent = sph_diagnostics::log_log_slope(&RATES, &peaks);

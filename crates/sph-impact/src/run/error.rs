@@ -1,0 +1,72 @@
+//! Run errors: bad input (the scene, the options) against a failed run (the solver
+//! stopped, an output could not be written). The command line maps the first to exit
+//! code 2 and the second to 1.
+
+use crate::scene::SceneError;
+use thiserror::Error;
+
+/// Why a run did not finish.
+#[derive(Debug, Error)]
+pub enum RunError {
+    /// The scene is invalid (bad input). Boxed to keep `Result`s small.
+    #[error("{0}")]
+    Scene(Box<SceneError>),
+    /// A run option is out of range (bad input).
+    #[error("option `{option}` = {value}: {reason}")]
+    Option {
+        /// The option's name.
+        option: &'static str,
+        /// The value given.
+        value: f64,
+        /// What is allowed.
+        reason: &'static str,
+    },
+    /// The solver stopped (the state became unphysical, the step collapsed).
+    #[error("run failed at t = {time:e} s (step {step}): {message}")]
+    Solver {
+        /// Simulated time reached (s).
+        time: f64,
+        /// Steps completed.
+        step: u64,
+        /// The solver's message.
+        message: String,
+    },
+    /// A diagnostic could not be computed.
+    #[error("diagnostics: {0}")]
+    Diagnostics(String),
+    /// An output file could not be written.
+    #[error("cannot write {path}: {message}")]
+    Io {
+        /// The file.
+        path: String,
+        /// The operating system's or encoder's message.
+        message: String,
+    },
+}
+
+impl RunError {
+    /// True for errors in the input (scene, options) rather than in the run.
+    pub fn is_bad_input(&self) -> bool {
+        matches!(self, RunError::Scene(_) | RunError::Option { .. })
+    }
+
+    /// An I/O error on `path`.
+    pub(crate) fn io(path: &std::path::Path, e: impl std::fmt::Display) -> Self {
+        RunError::Io {
+            path: path.display().to_string(),
+            message: e.to_string(),
+        }
+    }
+}
+
+impl From<SceneError> for RunError {
+    fn from(e: SceneError) -> Self {
+        RunError::Scene(Box::new(e))
+    }
+}
+
+impl From<sph_diagnostics::ImpactError> for RunError {
+    fn from(e: sph_diagnostics::ImpactError) -> Self {
+        RunError::Diagnostics(e.to_string())
+    }
+}

@@ -1,0 +1,101 @@
+//! `history.csv`: one row every `history_every` steps (and at t = 0 and the end) with
+//! time, step, β, crater size, energies and momentum.
+
+use crate::run::error::RunError;
+use std::fs::File;
+use std::io::{BufWriter, Write};
+use std::path::{Path, PathBuf};
+
+/// The columns of `history.csv` (SI units).
+pub const HISTORY_COLUMNS: [&str; 13] = [
+    "t_s",
+    "step",
+    "dt_s",
+    "beta",
+    "beta_target",
+    "ejecta_mass_kg",
+    "crater_depth_m",
+    "crater_diameter_m",
+    "kinetic_J",
+    "internal_J",
+    "total_J",
+    "momentum_z_kg_m_s",
+    "crater_measured",
+];
+
+/// One row.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct HistoryRow {
+    /// Simulated time (s).
+    pub t: f64,
+    /// Steps completed.
+    pub step: u64,
+    /// Last step (s); 0 at t = 0.
+    pub dt: f64,
+    /// β from the ejecta.
+    pub beta: f64,
+    /// β from the target's momentum.
+    pub beta_target: f64,
+    /// Ejecta mass (kg).
+    pub ejecta_mass: f64,
+    /// Crater depth (m), from the last snapshot.
+    pub crater_depth: f64,
+    /// Crater diameter (m), from the last snapshot.
+    pub crater_diameter: f64,
+    /// Σ ½ m v² (J).
+    pub kinetic: f64,
+    /// Σ m e (J).
+    pub internal: f64,
+    /// Σ m v_z (kg·m/s).
+    pub momentum_z: f64,
+    /// True on rows where the crater was measured (snapshots), false where the row
+    /// carries the last measured value.
+    pub crater_measured: bool,
+}
+
+/// The open history file and the rows so far (kept for the plots).
+pub(crate) struct History {
+    path: PathBuf,
+    out: BufWriter<File>,
+    pub rows: Vec<HistoryRow>,
+}
+
+impl History {
+    pub fn create(path: &Path) -> Result<Self, RunError> {
+        let file = File::create(path).map_err(|e| RunError::io(path, e))?;
+        let mut out = BufWriter::new(file);
+        writeln!(out, "{}", HISTORY_COLUMNS.join(",")).map_err(|e| RunError::io(path, e))?;
+        Ok(Self {
+            path: path.to_owned(),
+            out,
+            rows: Vec::new(),
+        })
+    }
+
+    pub fn push(&mut self, r: HistoryRow) -> Result<(), RunError> {
+        writeln!(
+            self.out,
+            "{:e},{},{:e},{},{},{:e},{:e},{:e},{:e},{:e},{:e},{:e},{}",
+            r.t,
+            r.step,
+            r.dt,
+            r.beta,
+            r.beta_target,
+            r.ejecta_mass,
+            r.crater_depth,
+            r.crater_diameter,
+            r.kinetic,
+            r.internal,
+            r.kinetic + r.internal,
+            r.momentum_z,
+            u8::from(r.crater_measured)
+        )
+        .map_err(|e| RunError::io(&self.path, e))?;
+        self.rows.push(r);
+        Ok(())
+    }
+
+    pub fn flush(&mut self) -> Result<(), RunError> {
+        self.out.flush().map_err(|e| RunError::io(&self.path, e))
+    }
+}

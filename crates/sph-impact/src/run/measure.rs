@@ -1,0 +1,111 @@
+//! The impact diagnostics of one instant (docs/diagnostics.md): ejecta, β from the
+//! ejecta and from the target, the crater.
+
+use crate::run::arrays::Arrays;
+use crate::scene::DiagnosticSetup;
+use serde::Serialize;
+use sph_diagnostics::{
+    Crater, CraterOptions, EjectaCriterion, Geometry, ProjectileDebris, beta_from_ejecta,
+    beta_from_target, crater, ejecta,
+};
+
+/// What the diagnostics need that does not change during a run.
+pub(crate) struct Measurer {
+    /// Target body ids.
+    pub targets: Vec<u16>,
+    pub setup: DiagnosticSetup,
+    /// Projectile mass m_p (kg).
+    pub projectile_mass: f64,
+    /// Initial axial momentum of everything but the projectile (kg·m/s).
+    pub initial_target_momentum_z: f64,
+    /// Height of the surface above the top particle layer (m), from t = 0
+    /// ([`Measurer::calibrate`]).
+    pub top_offset: f64,
+}
+
+/// β and the ejecta at one instant.
+#[derive(Clone, Copy, Debug, Default, Serialize)]
+pub(crate) struct BetaMeasure {
+    pub beta: f64,
+    pub beta_target: f64,
+    pub ejecta_mass: f64,
+    pub ejecta_momentum_z: f64,
+}
+
+impl Measurer {
+    /// True when there is a target and an impact speed, so β and the crater are defined.
+    pub fn active(&self) -> bool {
+        !self.targets.is_empty() && self.setup.impact_speed > 0.0 && self.projectile_mass > 0.0
+    }
+
+    pub fn criterion(&self) -> EjectaCriterion<'_> {
+        EjectaCriterion::new(&self.targets, self.setup.surface_z)
+            .with_tolerance(self.setup.ejecta_tolerance)
+    }
+
+    /// β (from the ejecta and from the target) and the ejecta sums; NaN when inactive.
+    pub fn beta(&self, a: &Arrays) -> Result<BetaMeasure, sph_diagnostics::ImpactError> {
+        if !self.active() {
+            return Ok(BetaMeasure {
+                beta: f64::NAN,
+                beta_target: f64::NAN,
+                ..Default::default()
+            });
+        }
+        let view = a.view();
+        let c = self.criterion();
+        let ej = ejecta(&view, &c)?;
+        let u = self.setup.impact_speed;
+        Ok(BetaMeasure {
+            beta: beta_from_ejecta(ej.momentum_z, self.projectile_mass, u)?,
+            beta_target: beta_from_target(
+                &view,
+                &c,
+                self.projectile_mass,
+                u,
+                self.initial_target_momentum_z,
+                ProjectileDebris::WithRemnant,
+            )?
+            .beta,
+            ejecta_mass: ej.mass,
+            ejecta_momentum_z: ej.momentum_z,
+        })
+    }
+
+    /// The crater options: the setup's bin, one bin as the depth threshold, the
+    /// measured offset of the top layer.
+    pub fn crater_options(&self) -> CraterOptions {
+        let mut o = CraterOptions::new(Geometry::ThreeD, self.setup.crater_bin);
+        o.top_offset = self.top_offset;
+        o
+    }
+
+    /// Sets the top-layer offset from the untouched target at t = 0: the median depth of
+    /// its profile. A lattice's top layer sits half a spacing below the surface and the
+    /// variable-resolution layers somewhere below it; with the offset an untouched bed
+    /// reads depth 0 (docs/diagnostics.md §4.1).
+    pub fn calibrate(&mut self, a: &Arrays) -> Result<(), sph_diagnostics::ImpactError> {
+        self.top_offset = 0.0;
+        if let Some(c) = self.crater(a)? {
+            let mut d: Vec<f64> = c
+                .profile
+                .depth
+                .into_iter()
+                .filter(|x| x.is_finite())
+                .collect();
+            if !d.is_empty() {
+                d.sort_by(f64::total_cmp);
+                self.top_offset = d[d.len() / 2];
+            }
+        }
+        Ok(())
+    }
+
+    /// The crater; `None` when inactive.
+    pub fn crater(&self, a: &Arrays) -> Result<Option<Crater>, sph_diagnostics::ImpactError> {
+        if !self.active() {
+            return Ok(None);
+        }
+        crater(&a.view(), &self.criterion(), &self.crater_options()).map(Some)
+    }
+}

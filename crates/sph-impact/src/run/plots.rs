@@ -1,0 +1,182 @@
+//! The run's PNG plots: the crater cross-section coloured by damage, β(t) and crater
+//! size(t), the ejecta distribution against v_z/U, and the projectile's specific-energy
+//! histogram with the melting and vaporisation thresholds.
+
+use crate::run::arrays::Arrays;
+use crate::run::error::RunError;
+use crate::run::history::HistoryRow;
+use sph_diagnostics::plot::{
+    BLACK, BLUE, ColorScale, Colormap, Figure, GREY, Marker, ORANGE, PlotError, RED, Style,
+};
+use sph_diagnostics::{EjectaBin, MassHistogram};
+use sph_eos::ThermalModel;
+use std::path::Path;
+
+fn save(fig: &Figure, path: &Path) -> Result<(), RunError> {
+    fig.save_png(path)
+        .map(|_| ())
+        .map_err(|e| RunError::io(path, e))
+}
+
+fn plot_err(path: &Path) -> impl Fn(PlotError) -> RunError + '_ {
+    move |e| RunError::io(path, e)
+}
+
+/// x against z of the particles in the slab |y| < their own spacing, coloured by damage;
+/// the projectile's particles are ringed.
+pub(crate) fn cross_section(
+    a: &Arrays,
+    spacing: &[f64],
+    surface_z: f64,
+    projectile: u16,
+    path: &Path,
+) -> Result<(), RunError> {
+    let e = plot_err(path);
+    let sel: Vec<usize> = (0..a.position.len())
+        .filter(|&i| a.position[i][1].abs() < spacing[i])
+        .collect();
+    let x: Vec<f64> = sel.iter().map(|&i| a.position[i][0] * 1e3).collect();
+    let z: Vec<f64> = sel.iter().map(|&i| a.position[i][2] * 1e3).collect();
+    let d: Vec<f64> = sel.iter().map(|&i| a.damage[i]).collect();
+    let mut fig = Figure::new(1200, 900);
+    fig.title("Cross-section |y| < particle spacing, coloured by damage D");
+    let ax = fig.axes();
+    ax.xlabel("x (mm)").ylabel("z (mm)").equal_aspect(true);
+    let scale = ColorScale {
+        map: Colormap::Viridis,
+        range: Some((0.0, 1.0)),
+        label: "damage D".into(),
+    };
+    ax.scatter_colored(&x, &z, &d, scale, Style::points(BLACK).size(4.0))
+        .map_err(&e)?;
+    let (px, pz): (Vec<f64>, Vec<f64>) = sel
+        .iter()
+        .zip(x.iter().zip(&z))
+        .filter(|(i, _)| a.body[**i] == projectile)
+        .map(|(_, (x, z))| (*x, *z))
+        .unzip();
+    ax.scatter(
+        &px,
+        &pz,
+        Style::points(RED)
+            .marker(Marker::OpenCircle)
+            .size(7.0)
+            .label("projectile"),
+    )
+    .map_err(&e)?;
+    if surface_z.is_finite() {
+        ax.hline(
+            surface_z * 1e3,
+            Style::line(GREY).dashed(6.0, 4.0).label("original surface"),
+        )
+        .map_err(&e)?;
+    }
+    save(&fig, path)
+}
+
+/// β(t) and crater depth and diameter against time.
+pub(crate) fn histories(rows: &[HistoryRow], path: &Path) -> Result<(), RunError> {
+    let e = plot_err(path);
+    let t: Vec<f64> = rows.iter().map(|r| r.t * 1e6).collect();
+    let beta: Vec<f64> = rows.iter().map(|r| r.beta).collect();
+    let beta_t: Vec<f64> = rows.iter().map(|r| r.beta_target).collect();
+    let measured: Vec<&HistoryRow> = rows.iter().filter(|r| r.crater_measured).collect();
+    let tc: Vec<f64> = measured.iter().map(|r| r.t * 1e6).collect();
+    let depth: Vec<f64> = measured.iter().map(|r| r.crater_depth * 1e3).collect();
+    let diam: Vec<f64> = measured.iter().map(|r| r.crater_diameter * 1e3).collect();
+    let mut fig = Figure::new(1200, 1000);
+    fig.title("Momentum transfer and crater size against time");
+    let ax = fig.panel(0, 0, 2, 1).map_err(&e)?;
+    ax.title("beta").xlabel("t (us)").ylabel("beta");
+    ax.line(&t, &beta, Style::line(BLUE).label("beta = 1 + P_ej/P_imp"))
+        .map_err(&e)?;
+    ax.line(
+        &t,
+        &beta_t,
+        Style::line(ORANGE)
+            .dashed(6.0, 4.0)
+            .label("beta from target"),
+    )
+    .map_err(&e)?;
+    let ax = fig.panel(1, 0, 2, 1).map_err(&e)?;
+    ax.title("crater").xlabel("t (us)").ylabel("mm");
+    ax.line(&tc, &diam, Style::line(BLUE).label("diameter"))
+        .map_err(&e)?;
+    ax.line(&tc, &depth, Style::line(RED).label("depth"))
+        .map_err(&e)?;
+    save(&fig, path)
+}
+
+/// Ejecta mass and axial momentum per v_z/U bin.
+pub(crate) fn ejecta(bins: &[EjectaBin], path: &Path) -> Result<(), RunError> {
+    let e = plot_err(path);
+    let mut fig = Figure::new(1200, 1000);
+    fig.title("Ejecta against normalised axial speed v_z/U");
+    let mut edges: Vec<f64> = bins.iter().map(|b| b.v_over_u_lo).collect();
+    edges.push(bins.last().map_or(1.0, |b| b.v_over_u_hi));
+    let mass: Vec<f64> = bins.iter().map(|b| b.mass * 1e3).collect();
+    let mom: Vec<f64> = bins.iter().map(|b| b.momentum_z).collect();
+    let ax = fig.panel(0, 0, 2, 1).map_err(&e)?;
+    ax.title("mass").xlabel("v_z/U").ylabel("ejecta mass (g)");
+    if bins.is_empty() {
+        ax.line(
+            &[0.0, 1.0],
+            &[0.0, 0.0],
+            Style::line(GREY).label("no ejecta"),
+        )
+        .map_err(&e)?;
+    } else {
+        ax.bars(&edges, &mass, Style::bars(BLUE)).map_err(&e)?;
+    }
+    let ax = fig.panel(1, 0, 2, 1).map_err(&e)?;
+    ax.title("axial momentum").xlabel("v_z/U").ylabel("kg m/s");
+    if bins.is_empty() {
+        ax.line(
+            &[0.0, 1.0],
+            &[0.0, 0.0],
+            Style::line(GREY).label("no ejecta"),
+        )
+        .map_err(&e)?;
+    } else {
+        ax.bars(&edges, &mom, Style::bars(ORANGE)).map_err(&e)?;
+    }
+    save(&fig, path)
+}
+
+/// The projectile's mass per specific-energy bin, with the thermal model's thresholds.
+pub(crate) fn projectile_energy(
+    hist: &MassHistogram,
+    thermal: Option<&ThermalModel>,
+    path: &Path,
+) -> Result<(), RunError> {
+    let e = plot_err(path);
+    let mut fig = Figure::new(1200, 800);
+    fig.title("Projectile specific internal energy");
+    let ax = fig.axes();
+    ax.xlabel("e (MJ/kg)").ylabel("mass fraction per bin");
+    let total = hist.total().max(f64::MIN_POSITIVE);
+    let edges: Vec<f64> = hist.edges.iter().map(|x| x * 1e-6).collect();
+    let frac: Vec<f64> = hist.mass.iter().map(|m| m / total).collect();
+    ax.bars(&edges, &frac, Style::bars(BLUE)).map_err(&e)?;
+    if let Some(t) = thermal {
+        let lines = [
+            (t.incipient_melting_energy(), "melting starts", ORANGE),
+            (t.complete_melting_energy(), "melting complete", RED),
+            (
+                t.incipient_vaporisation_energy(),
+                "vaporisation starts",
+                GREY,
+            ),
+            (
+                t.complete_vaporisation_energy(),
+                "vaporisation complete",
+                BLACK,
+            ),
+        ];
+        for (x, label, c) in lines {
+            ax.vline(x * 1e-6, Style::line(c).dashed(6.0, 4.0).label(label))
+                .map_err(&e)?;
+        }
+    }
+    save(&fig, path)
+}

@@ -1,0 +1,83 @@
+//! The progress line of a run on standard error: simulated time, steps,
+//! particle-steps per second and the estimated time left. On a terminal it is redrawn
+//! in place at most twice a second; otherwise (a log file) a line is written every 30 s.
+
+use crate::scene::estimate_human_seconds;
+use std::io::{IsTerminal, Write};
+use std::time::{Duration, Instant};
+
+/// Prints progress unless quiet.
+pub(crate) struct Progress {
+    quiet: bool,
+    terminal: bool,
+    start: Instant,
+    last: Option<Instant>,
+    end_time: f64,
+    particles: usize,
+}
+
+impl Progress {
+    pub fn new(quiet: bool, end_time: f64, particles: usize) -> Self {
+        Self {
+            quiet,
+            terminal: std::io::stderr().is_terminal(),
+            start: Instant::now(),
+            last: None,
+            end_time,
+            particles,
+        }
+    }
+
+    /// Reports the state after `steps` steps at simulated time `t` (s).
+    pub fn update(&mut self, t: f64, steps: u64, force: bool) {
+        if self.quiet {
+            return;
+        }
+        let every = if self.terminal {
+            Duration::from_millis(500)
+        } else {
+            Duration::from_secs(30)
+        };
+        let now = Instant::now();
+        if !force && self.last.is_some_and(|l| now - l < every) {
+            return;
+        }
+        self.last = Some(now);
+        let wall = (now - self.start).as_secs_f64().max(1e-9);
+        let rate = steps as f64 * self.particles as f64 / wall;
+        let done = (t / self.end_time).clamp(0.0, 1.0);
+        let eta = if done > 0.0 {
+            estimate_human_seconds(wall * (1.0 - done) / done)
+        } else {
+            "?".into()
+        };
+        let width = 24;
+        let filled = (done * width as f64).round() as usize;
+        let line = format!(
+            "[{}{}] t = {:.3e}/{:.3e} s ({:5.1} %) | step {} | {:.2e} particle-steps/s | ETA {}",
+            "#".repeat(filled),
+            "-".repeat(width - filled),
+            t,
+            self.end_time,
+            100.0 * done,
+            steps,
+            rate,
+            eta
+        );
+        let mut err = std::io::stderr().lock();
+        if self.terminal {
+            let _ = write!(err, "\r{line}\x1b[K");
+        } else {
+            let _ = writeln!(err, "{line}");
+        }
+        let _ = err.flush();
+    }
+
+    /// Ends the line.
+    pub fn finish(&mut self, t: f64, steps: u64) {
+        self.update(t, steps, true);
+        if !self.quiet && self.terminal {
+            eprintln!();
+        }
+    }
+}

@@ -1,0 +1,110 @@
+//! `summary.json`: the final diagnostics and the run's cost, with the scene as parsed.
+
+use crate::run::measure::BetaMeasure;
+use crate::scene::BodyInfo;
+use crate::{Conserved, DamageEvents, PhaseTimes, SchemeConfig};
+use serde::Serialize;
+use sph_core::Dim3;
+use sph_diagnostics::{BodyDamage, EjectaBin, PhaseFractions};
+
+/// Damage of one body at the end.
+#[derive(Clone, Debug, Serialize)]
+pub struct BodyDamageSummary {
+    /// The body.
+    pub body: String,
+    /// Its mass (kg).
+    pub mass_kg: f64,
+    /// Mass-weighted mean damage.
+    pub mean_damage: f64,
+    /// Mass with D ≥ 0.99 (kg).
+    pub fully_damaged_mass_kg: f64,
+}
+
+impl BodyDamageSummary {
+    pub(crate) fn of(d: &BodyDamage, bodies: &[BodyInfo]) -> Self {
+        Self {
+            body: bodies
+                .get(d.body as usize)
+                .map_or_else(|| d.body.to_string(), |b| b.name.clone()),
+            mass_kg: d.mass,
+            mean_damage: d.mean_damage,
+            fully_damaged_mass_kg: d.fully_damaged_mass,
+        }
+    }
+}
+
+/// Everything `summary.json` holds (SI units; NaN is written as null).
+#[derive(Clone, Debug, Serialize)]
+pub struct RunSummary {
+    /// Crater diameter including the spall zone (m).
+    pub crater_diameter_m: f64,
+    /// Diameter of the central bowl (m).
+    pub bowl_diameter_m: f64,
+    /// Crater depth (m).
+    pub crater_depth_m: f64,
+    /// Highest rim above the surface (m).
+    pub rim_height_m: f64,
+    /// β = 1 + P_ej/P_imp.
+    pub beta: f64,
+    /// β from the target's momentum change (cross-check).
+    pub beta_target: f64,
+    /// Ejecta mass (kg).
+    pub ejecta_mass_kg: f64,
+    /// Ejecta axial momentum (kg·m/s).
+    pub ejecta_momentum_z_kg_m_s: f64,
+    /// Projectile mass (kg).
+    pub projectile_mass_kg: f64,
+    /// Impact speed (m/s).
+    pub impact_speed_m_s: f64,
+    /// Particles.
+    pub particles: usize,
+    /// Steps taken.
+    pub steps: u64,
+    /// Simulated end time (s).
+    pub end_time_s: f64,
+    /// Wall time of the run, set-up and output included (s).
+    pub wall_time_s: f64,
+    /// Particles × steps / wall time of the stepping.
+    pub particle_steps_per_s: f64,
+    /// Worker threads.
+    pub threads: usize,
+    /// Particle spacings were divided by this.
+    pub resolution_scale: f64,
+    /// The sph-impact version.
+    pub version: String,
+    /// The scene as parsed (the same keys as the file).
+    pub scene: serde_json::Value,
+    /// The scheme used (the scene's `[solver]` over the study's settings).
+    pub scheme: SchemeConfig,
+    /// The bodies as built.
+    pub bodies: Vec<BodyInfo>,
+    /// Damage per body.
+    pub damage: Vec<BodyDamageSummary>,
+    /// Projectile mass fractions past the melting/vaporisation energies (when its
+    /// material has a thermal model).
+    pub projectile_phase_fractions: Option<PhaseFractions>,
+    /// Ejecta mass and momentum against v_z/U.
+    pub ejecta_distribution: Vec<EjectaBin>,
+    /// The crater profile: bin outer radius (m) and depth (m; null in empty bins).
+    pub crater_profile: (Vec<f64>, Vec<f64>),
+    /// Totals at the start.
+    pub initial: Conserved<Dim3>,
+    /// Totals at the end.
+    pub last: Conserved<Dim3>,
+    /// (E_end − E_0)/E_0.
+    pub energy_error: f64,
+    /// Time per solver phase (s).
+    pub timings: PhaseTimes,
+    /// What the damage bounds did.
+    pub damage_events: DamageEvents,
+}
+
+impl RunSummary {
+    /// β and ejecta from a measurement.
+    pub(crate) fn set_beta(&mut self, b: &BetaMeasure) {
+        self.beta = b.beta;
+        self.beta_target = b.beta_target;
+        self.ejecta_mass_kg = b.ejecta_mass;
+        self.ejecta_momentum_z_kg_m_s = b.ejecta_momentum_z;
+    }
+}

@@ -1,0 +1,223 @@
+//! What `sph-impact check` reports: per body the particle count, mass and exact mass
+//! ρ·V, and estimates of the first time step, the steps to the end time, the runtime and
+//! the memory.
+//!
+//! The estimates are stated, not measured:
+//!
+//! - **first dt** = λ_CFL · Δx_min / (c_L,max + U): the solver's CFL vote (paper §2.5)
+//!   with the smallest spacing, the largest longitudinal wave speed c_L = √((K + 4G/3)/ρ0)
+//!   of the materials at rest, and the impact speed U as the approach speed;
+//! - **steps** = end time / first dt (the step shrinks when shocks compress and heat the
+//!   material, so this is a lower bound);
+//! - **runtime** = steps × 2 derivative evaluations (RK2) × particles / (rate × cores),
+//!   with the rate [`ASSUMED_EVALUATIONS_PER_CORE_SOLID`] for scenes with strength and
+//!   [`ASSUMED_EVALUATIONS_PER_CORE_FLUID`] otherwise (docs/performance.md);
+//! - **memory** = particles × [`ASSUMED_BYTES_PER_PARTICLE`].
+
+use crate::scene::Scene;
+use crate::scene::build::BodyInfo;
+use crate::scene::error::SceneError;
+use serde::Serialize;
+
+/// Derivative evaluations per second per core assumed for a solid scene: the first target
+/// of the solid-dynamics work (5e4; not yet measured on an impact).
+pub const ASSUMED_EVALUATIONS_PER_CORE_SOLID: f64 = 5.0e4;
+
+/// Derivative evaluations per second per core assumed for a fluid scene: the 3-D Sedov
+/// bench (1.0e5, docs/performance.md).
+pub const ASSUMED_EVALUATIONS_PER_CORE_FLUID: f64 = 1.0e5;
+
+/// Memory per particle assumed (bytes): the solid-dynamics target of ≤ 1 kB per particle
+/// (state, three RK2 copies, neighbour list at ≈ 65 neighbours, stage scratch).
+pub const ASSUMED_BYTES_PER_PARTICLE: f64 = 1000.0;
+
+/// One body in the check report.
+#[derive(Clone, Debug, Serialize)]
+pub struct BodyReport {
+    /// The body's name.
+    pub name: String,
+    /// Its material's name.
+    pub material: String,
+    /// Number of particles.
+    pub particles: usize,
+    /// Σ m (kg).
+    pub mass_kg: f64,
+    /// ρ·V of the shape (kg), when known.
+    pub exact_mass_kg: Option<f64>,
+    /// Σm/(ρV) − 1.
+    pub mass_error: Option<f64>,
+    /// Finest particle spacing (m).
+    pub min_spacing_m: f64,
+    /// Coarsest particle spacing (m).
+    pub max_spacing_m: f64,
+    /// Longitudinal wave speed at rest c_L (m/s).
+    pub wave_speed_m_s: f64,
+}
+
+/// The report of `sph-impact check`.
+#[derive(Clone, Debug, Serialize)]
+pub struct CheckReport {
+    /// The scene file (or `"<builder>"`).
+    pub scene: String,
+    /// Per body.
+    pub bodies: Vec<BodyReport>,
+    /// All particles.
+    pub particles: usize,
+    /// Resolution scale used (spacings divided by it).
+    pub resolution_scale: f64,
+    /// Estimated first time step (s).
+    pub first_dt_s: f64,
+    /// Estimated number of steps to the end time.
+    pub steps: f64,
+    /// End time (s).
+    pub end_time_s: f64,
+    /// Threads assumed for the runtime.
+    pub threads: usize,
+    /// Rate assumed (derivative evaluations per second per core).
+    pub assumed_rate_per_core: f64,
+    /// Estimated wall time (s).
+    pub runtime_s: f64,
+    /// Estimated memory (bytes).
+    pub memory_bytes: f64,
+    /// Wall time of the placement itself (s).
+    pub placement_s: f64,
+}
+
+impl Scene {
+    /// Places the bodies and estimates the run; `end_time` overrides the scene's.
+    pub fn check_report(
+        &self,
+        resolution_scale: f64,
+        threads: usize,
+        end_time: Option<f64>,
+    ) -> Result<CheckReport, SceneError> {
+        let t0 = std::time::Instant::now();
+        let placed = self.place(resolution_scale)?;
+        let placement_s = t0.elapsed().as_secs_f64();
+        let setup = self.diagnostic_setup(resolution_scale)?;
+        let scheme = self.scheme();
+        let mut start = 0;
+        let mut bodies = Vec::new();
+        for b in &placed {
+            let info = BodyInfo::of(b, start);
+            start = info.range.end;
+            bodies.push(BodyReport {
+                name: info.name.clone(),
+                material: info.material_name.clone(),
+                particles: info.particles,
+                mass_kg: info.mass,
+                exact_mass_kg: info.exact_mass,
+                mass_error: info.mass_error(),
+                min_spacing_m: info.spacing.0,
+                max_spacing_m: info.spacing.1,
+                wave_speed_m_s: b.material.longitudinal_wave_speed().unwrap_or(0.0),
+            });
+        }
+        let dx = bodies
+            .iter()
+            .map(|b| b.min_spacing_m)
+            .fold(f64::INFINITY, f64::min);
+        let c = bodies.iter().map(|b| b.wave_speed_m_s).fold(0.0, f64::max);
+        let first_dt = scheme.cfl * dx / (c + setup.impact_speed);
+        let end = end_time.unwrap_or(self.end_time);
+        let steps = (end / first_dt).ceil();
+        let solid = placed.iter().any(|b| !b.material.is_fluid());
+        let rate = if solid {
+            ASSUMED_EVALUATIONS_PER_CORE_SOLID
+        } else {
+            ASSUMED_EVALUATIONS_PER_CORE_FLUID
+        };
+        let threads = threads.max(1);
+        Ok(CheckReport {
+            scene: self.origin().unwrap_or("<builder>").to_owned(),
+            particles: start,
+            bodies,
+            resolution_scale,
+            first_dt_s: first_dt,
+            steps,
+            end_time_s: end,
+            threads,
+            assumed_rate_per_core: rate,
+            runtime_s: steps * 2.0 * start as f64 / (rate * threads as f64),
+            memory_bytes: start as f64 * ASSUMED_BYTES_PER_PARTICLE,
+            placement_s,
+        })
+    }
+}
+
+impl CheckReport {
+    /// The report as text, one fact per line.
+    pub fn to_text(&self) -> String {
+        use std::fmt::Write;
+        let mut s = String::new();
+        let _ = writeln!(
+            s,
+            "scene {} (resolution scale {})",
+            self.scene, self.resolution_scale
+        );
+        for b in &self.bodies {
+            let _ = writeln!(s, "body \"{}\" ({})", b.name, b.material);
+            let _ = writeln!(s, "  particles     {}", b.particles);
+            let _ = writeln!(s, "  mass          {:.6e} kg", b.mass_kg);
+            match (b.exact_mass_kg, b.mass_error) {
+                (Some(m), Some(e)) => {
+                    let _ = writeln!(s, "  exact mass ρV {m:.6e} kg (error {e:+.2e})");
+                }
+                _ => {
+                    let _ = writeln!(
+                        s,
+                        "  exact mass ρV unknown (the shape has no closed-form volume)"
+                    );
+                }
+            }
+            let _ = writeln!(
+                s,
+                "  spacing       {:.4} … {:.4} mm; c_L {:.0} m/s",
+                b.min_spacing_m * 1e3,
+                b.max_spacing_m * 1e3,
+                b.wave_speed_m_s
+            );
+        }
+        let _ = writeln!(s, "particles       {}", self.particles);
+        let _ = writeln!(
+            s,
+            "first dt        {:.3e} s (CFL × smallest spacing / (c_L + impact speed))",
+            self.first_dt_s
+        );
+        let _ = writeln!(
+            s,
+            "steps           ≥ {:.0} to t = {:.3e} s",
+            self.steps, self.end_time_s
+        );
+        let _ = writeln!(
+            s,
+            "runtime         ≈ {} on {} thread(s) (assumed {:.0e} derivative evaluations/s/core, 2 per RK2 step)",
+            human_seconds(self.runtime_s),
+            self.threads,
+            self.assumed_rate_per_core
+        );
+        let _ = writeln!(
+            s,
+            "memory          ≈ {:.2} GB (assumed {:.0} bytes/particle)",
+            self.memory_bytes / 1e9,
+            ASSUMED_BYTES_PER_PARTICLE
+        );
+        let _ = writeln!(s, "placement took  {:.2} s", self.placement_s);
+        s
+    }
+}
+
+/// Seconds as "12 s", "3.4 min", "5.6 h" or "2.1 d".
+pub(crate) fn human_seconds(s: f64) -> String {
+    if !s.is_finite() {
+        "?".into()
+    } else if s < 120.0 {
+        format!("{s:.0} s")
+    } else if s < 7200.0 {
+        format!("{:.1} min", s / 60.0)
+    } else if s < 172_800.0 {
+        format!("{:.1} h", s / 3600.0)
+    } else {
+        format!("{:.1} d", s / 86_400.0)
+    }
+}

@@ -1,0 +1,141 @@
+//! Which body is the projectile and which the target, and the numbers the impact
+//! diagnostics need (surface, impact speed, bins), from `[diagnostics]` and its defaults.
+
+use crate::scene::Scene;
+use crate::scene::error::{SceneError, SceneErrorKind};
+use serde::Serialize;
+use sph_core::glam::DVec3;
+
+/// The resolved diagnostics settings of a scene.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct DiagnosticSetup {
+    /// Index of the projectile body.
+    pub projectile: usize,
+    /// Indices of the target bodies.
+    pub targets: Vec<usize>,
+    /// The target's original top surface z (m).
+    pub surface_z: f64,
+    /// Impact speed U (m/s); 0 when the projectile does not move relative to the target
+    /// (then β is not defined and is reported as NaN).
+    pub impact_speed: f64,
+    /// Radial bin of the crater profile (m).
+    pub crater_bin: f64,
+    /// Ejecta height tolerance above the surface (m).
+    pub ejecta_tolerance: f64,
+    /// Bin width of the ejecta distribution in v_z/U.
+    pub ejecta_bin: f64,
+}
+
+impl Scene {
+    /// The diagnostics settings with their defaults filled in, for particle spacings
+    /// divided by `resolution_scale`.
+    pub fn diagnostic_setup(&self, resolution_scale: f64) -> Result<DiagnosticSetup, SceneError> {
+        let d = &self.diagnostics;
+        let known = || {
+            self.bodies
+                .iter()
+                .map(|b| b.name.as_str())
+                .collect::<Vec<_>>()
+                .join(", ")
+        };
+        let find = |key: &str, name: &str| {
+            self.bodies
+                .iter()
+                .position(|b| b.name == name)
+                .ok_or_else(|| {
+                    SceneError::at_key(
+                        key,
+                        SceneErrorKind::MissingBody {
+                            name: name.to_owned(),
+                            known: known(),
+                        },
+                    )
+                })
+        };
+        let projectile = match &d.projectile {
+            Some(n) => find("diagnostics.projectile", n)?,
+            None => 0,
+        };
+        let targets: Vec<usize> = match &d.target {
+            Some(n) => vec![find("diagnostics.target", n)?],
+            None => (0..self.bodies.len())
+                .filter(|&i| i != projectile)
+                .collect(),
+        };
+        if targets.contains(&projectile) {
+            return Err(SceneError::at_key(
+                "diagnostics.target",
+                SceneErrorKind::Syntax("the target must not be the projectile".into()),
+            ));
+        }
+        let invalid = |key: &str, value: f64, reason: &str| {
+            SceneError::at_key(
+                key,
+                SceneErrorKind::Invalid {
+                    value,
+                    reason: reason.to_owned(),
+                },
+            )
+        };
+        let surface_z = match d.surface_z {
+            Some(z) if z.is_finite() => z,
+            Some(z) => return Err(invalid("diagnostics.surface_z", z, "must be finite (m)")),
+            None => targets
+                .iter()
+                .filter_map(|&t| self.bodies[t].shape.shape().ok()?.bounds())
+                .map(|b| b.max.z)
+                .fold(f64::NAN, f64::max),
+        };
+        let v = |i: usize| DVec3::from_array(self.bodies[i].velocity);
+        let impact_speed = match d.impact_speed {
+            Some(u) if u > 0.0 && u.is_finite() => u,
+            Some(u) => {
+                return Err(invalid(
+                    "diagnostics.impact_speed",
+                    u,
+                    "must be positive (m/s)",
+                ));
+            }
+            None => targets
+                .first()
+                .map_or(v(projectile).length(), |&t| (v(projectile) - v(t)).length()),
+        };
+        let crater_bin = match d.crater_bin {
+            Some(b) if b > 0.0 && b.is_finite() => b,
+            Some(b) => return Err(invalid("diagnostics.crater_bin", b, "must be positive (m)")),
+            None => {
+                targets
+                    .iter()
+                    .map(|&t| self.bodies[t].placement.finest_spacing())
+                    .fold(f64::INFINITY, f64::min)
+                    .min(self.bodies[projectile].placement.finest_spacing())
+                    / resolution_scale
+            }
+        };
+        let ejecta_tolerance = d.ejecta_tolerance.unwrap_or(0.0);
+        if !(ejecta_tolerance >= 0.0 && ejecta_tolerance.is_finite()) {
+            return Err(invalid(
+                "diagnostics.ejecta_tolerance",
+                ejecta_tolerance,
+                "must be ≥ 0 (m)",
+            ));
+        }
+        let ejecta_bin = d.ejecta_bin.unwrap_or(0.02);
+        if !(ejecta_bin > 0.0 && ejecta_bin.is_finite()) {
+            return Err(invalid(
+                "diagnostics.ejecta_bin",
+                ejecta_bin,
+                "must be positive",
+            ));
+        }
+        Ok(DiagnosticSetup {
+            projectile,
+            targets,
+            surface_z,
+            impact_speed,
+            crater_bin,
+            ejecta_tolerance,
+            ejecta_bin,
+        })
+    }
+}

@@ -1,0 +1,66 @@
+//! The scene's `geometry`, `[output]` and `[diagnostics]` settings.
+
+use serde::{Deserialize, Serialize};
+
+/// The run's geometry.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+pub enum GeometryKind {
+    /// Full 3-D.
+    #[default]
+    #[serde(rename = "3d")]
+    ThreeD,
+    /// Axisymmetric about z (not implemented yet: building such a scene is an error).
+    #[serde(rename = "rz")]
+    Rz,
+}
+
+/// `[output]`: what a run writes and how often.
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct OutputSettings {
+    /// Simulated time between snapshots (s); default a tenth of the end time. A snapshot
+    /// is also written at t = 0 and at the end.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub snapshot_interval: Option<f64>,
+    /// Run directory when the command line gives none; default `out/<scene file stem>`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub directory: Option<String>,
+    /// Steps between rows of `history.csv` (default 1: every step).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub history_every: Option<u64>,
+}
+
+impl OutputSettings {
+    /// The snapshot interval for end time `end_time` (s).
+    pub fn interval(&self, end_time: f64) -> f64 {
+        self.snapshot_interval.unwrap_or(end_time / 10.0)
+    }
+}
+
+/// `[diagnostics]`: how ejecta, β and the crater are measured (docs/diagnostics.md).
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct DiagnosticsSettings {
+    /// The projectile body; default the first body.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub projectile: Option<String>,
+    /// The target body; default every body but the projectile.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub target: Option<String>,
+    /// The target's original top surface z (m); default the top of the target's shape.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub surface_z: Option<f64>,
+    /// Impact speed U (m/s) for β and v_z/U; default the projectile's speed relative to
+    /// the target.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub impact_speed: Option<f64>,
+    /// Radial bin of the crater profile (m); default the target's finest spacing.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub crater_bin: Option<f64>,
+    /// Height above the surface an ejecta particle must pass (m); default 0 (the study).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub ejecta_tolerance: Option<f64>,
+    /// Bin width of the ejecta distribution in v_z/U; default 0.02.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub ejecta_bin: Option<f64>,
+}

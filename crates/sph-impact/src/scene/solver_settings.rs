@@ -1,0 +1,151 @@
+//! `[solver]`: a partial [`SchemeConfig`] merged over the study's settings. Every key is
+//! optional and has the name of the `SchemeConfig` field it sets; what a scene leaves out
+//! keeps the value of [`study_scheme`].
+
+use crate::solver::{DensityForm, EnergyForm, MomentumForm, SchemeConfig, SmoothingMode};
+use serde::{Deserialize, Serialize};
+use sph_kernel::KernelChoice;
+use sph_riemann::{ArtificialStressForm, InterfaceCoupling, Limiter, RiemannSolver};
+
+/// The study's scheme (paper §6): Wendland C2, n_target 2.5, λ_CFL 0.25, α_Π = β_Π = 1,
+/// artificial stress ε = 0.2, n = 4 (scalar form), the study's interface coupling; the
+/// other settings are [`SchemeConfig::default`]. The study used ASPH; the scalar h stays
+/// the default here until ASPH is validated on the impact.
+pub fn study_scheme() -> SchemeConfig {
+    let mut s = SchemeConfig::default();
+    s.artificial_stress.epsilon = 0.2;
+    s.artificial_stress.exponent = 4;
+    s.artificial_stress.form = ArtificialStressForm::Pressure;
+    s
+}
+
+/// `[solver] viscosity = { alpha = …, beta = … }`.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ViscositySettings {
+    /// Linear coefficient α_Π.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub alpha: Option<f64>,
+    /// Quadratic coefficient β_Π.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub beta: Option<f64>,
+}
+
+/// `[solver] artificial_stress = { epsilon = …, n = …, form = "pressure" | "principal" }`.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ArtificialStressSettings {
+    /// Strength ε (0 disables).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub epsilon: Option<f64>,
+    /// Exponent n.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub n: Option<i32>,
+    /// Scalar (pressure) or tensor (principal-stress) form.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub form: Option<ArtificialStressForm>,
+}
+
+/// The `[solver]` table: each key overrides one [`SchemeConfig`] field of
+/// [`study_scheme`] (see that type for the meaning of each).
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SolverSettings {
+    /// Kernel: `wendland-c2`, `wendland-c4`, `wendland-c6`, `cubic-spline`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub kernel: Option<KernelChoice>,
+    /// Support radius in particle spacings.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub n_target: Option<f64>,
+    /// CFL number λ.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub cfl: Option<f64>,
+    /// Monaghan viscosity α_Π, β_Π.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub viscosity: Option<ViscositySettings>,
+    /// Viscosity length as a fraction of the mean support radius.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub viscosity_length_factor: Option<f64>,
+    /// Artificial stress ε, n, form.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub artificial_stress: Option<ArtificialStressSettings>,
+    /// Star-state solver: `{ kind = "acoustic" }` or `{ kind = "hllc", waves = … }`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub riemann: Option<RiemannSolver>,
+    /// Interface coupling b_ij: `study`, `fsisph`, `riemann`, `mean`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub coupling: Option<InterfaceCoupling>,
+    /// Reconstruction limiter: `van-leer`, `minmod`, `none`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub limiter: Option<Limiter>,
+    /// Energy equation: `compatible`, `study`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub energy: Option<EnergyForm>,
+    /// Continuity equation: `mass`, `volume`, `summation`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub density: Option<DensityForm>,
+    /// Pressure in the momentum equation: `particle-pressure`, `star-pressure`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub momentum: Option<MomentumForm>,
+    /// Linear gradient correction in the continuity equation.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub gradient_correction: Option<bool>,
+    /// Linear correction of the strain rate.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub strain_rate_correction: Option<bool>,
+    /// Grad-h factor in the continuity equation.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub grad_h: Option<bool>,
+    /// Upper bound of h as a multiple of the initial support radius.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub h_max_factor: Option<f64>,
+    /// No tension across interfaces between different materials.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub unbonded_interfaces: Option<bool>,
+    /// `{ kind = "scalar" }` or `{ kind = "asph", max_aspect = … }`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub smoothing: Option<SmoothingMode>,
+}
+
+impl SolverSettings {
+    /// These settings over [`study_scheme`].
+    pub fn scheme(&self) -> SchemeConfig {
+        self.apply(study_scheme())
+    }
+
+    /// These settings over `base`.
+    pub fn apply(&self, base: SchemeConfig) -> SchemeConfig {
+        let mut s = base;
+        macro_rules! set {
+            ($($f:ident),*) => {$( if let Some(v) = self.$f { s.$f = v; } )*};
+        }
+        set!(
+            kernel,
+            n_target,
+            cfl,
+            viscosity_length_factor,
+            riemann,
+            coupling,
+            limiter,
+            energy,
+            density,
+            momentum,
+            gradient_correction,
+            strain_rate_correction,
+            grad_h,
+            h_max_factor,
+            unbonded_interfaces,
+            smoothing
+        );
+        if let Some(v) = self.viscosity {
+            s.viscosity.alpha = v.alpha.unwrap_or(s.viscosity.alpha);
+            s.viscosity.beta = v.beta.unwrap_or(s.viscosity.beta);
+        }
+        if let Some(a) = self.artificial_stress {
+            s.artificial_stress.epsilon = a.epsilon.unwrap_or(s.artificial_stress.epsilon);
+            s.artificial_stress.exponent = a.n.unwrap_or(s.artificial_stress.exponent);
+            s.artificial_stress.form = a.form.unwrap_or(s.artificial_stress.form);
+        }
+        s
+    }
+}

@@ -1,0 +1,398 @@
+//! Scenes: every bad-scene case gives a one-line error naming the problem, the key and
+//! the line; the bundled scenes round-trip through the parser; `check` on the study's
+//! 3.9 km/s scene; the smoke scene runs end to end.
+//!
+//! `cargo test -p sph-impact --test scene -- --nocapture` prints the messages and the
+//! check report.
+
+use sph_impact::run::{RunOptions, run};
+use sph_impact::scene::{Scene, SceneErrorKind};
+use std::path::{Path, PathBuf};
+
+/// A valid two-body scene; tests replace one line of it.
+const BASE: &str = r#"end_time = 1.0e-6
+seed = 3
+
+[[body]]
+name = "projectile"
+material = "aluminium-2024-jc"
+shape = { kind = "sphere", centre = [0.0, 0.0, 2.0e-3], radius = 1.5e-3 }
+placement = { kind = "lattice", spacing = 0.5e-3 }
+velocity = [0.0, 0.0, -3900.0]
+
+[[body]]
+name = "target"
+material = "basalt-study"
+shape = { kind = "cuboid", min = [-4.0e-3, -4.0e-3, -4.0e-3], max = [4.0e-3, 4.0e-3, 0.0] }
+placement = { kind = "lattice", spacing = 0.5e-3 }
+
+[diagnostics]
+projectile = "projectile"
+target = "target"
+"#;
+
+/// `BASE` with `from` replaced by `to` (which must occur).
+fn edit(from: &str, to: &str) -> String {
+    assert!(BASE.contains(from), "{from}");
+    BASE.replacen(from, to, 1)
+}
+
+/// The one-line message of reading `text`, printed.
+fn message(text: &str) -> String {
+    let e = Scene::from_toml_str(text, "scene.toml").expect_err("the scene must be rejected");
+    let m = e.to_string();
+    println!("{m}");
+    assert_eq!(m.lines().count(), 1, "one line: {m}");
+    m
+}
+
+fn workspace() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../..")
+}
+
+fn scene_file(name: &str) -> PathBuf {
+    workspace().join("examples/scenes").join(name)
+}
+
+#[test]
+fn base_scene_is_valid() {
+    let s = Scene::from_toml_str(BASE, "scene.toml").unwrap();
+    assert_eq!(s.bodies.len(), 2);
+    // [solver] absent: the study's artificial stress.
+    assert_eq!(s.scheme().artificial_stress.epsilon, 0.2);
+    assert_eq!(s.scheme().artificial_stress.exponent, 4);
+}
+
+#[test]
+fn no_bodies() {
+    let text = "end_time = 1.0e-6\n";
+    let m = message(text);
+    assert!(m.contains("no bodies"), "{m}");
+    assert!(m.starts_with("scene.toml: `body`:"), "{m}");
+}
+
+#[test]
+fn missing_body() {
+    let m = message(&edit("target = \"target\"", "target = \"targt\""));
+    assert!(m.contains("no body named \"targt\""), "{m}");
+    assert!(m.contains("projectile, target"), "{m}");
+    assert!(
+        m.starts_with("scene.toml:19:10: `diagnostics.target`:"),
+        "{m}"
+    );
+}
+
+#[test]
+fn unknown_material() {
+    let m = message(&edit(
+        "material = \"basalt-study\"",
+        "material = \"basalt-x\"",
+    ));
+    assert!(
+        m.starts_with("scene.toml:13:12: body \"target\": `material`: unknown material \"basalt-x\" (known: basalt-study,"),
+        "{m}"
+    );
+}
+
+#[test]
+fn negative_density_in_inline_material() {
+    let text = edit(
+        "material = \"basalt-study\"",
+        "material = { base = \"basalt-study\", density = -2876.0 }",
+    );
+    let m = message(&text);
+    assert!(m.contains("`density` = -2876 is invalid"), "{m}");
+    assert!(m.contains("body \"target\": `material.density`"), "{m}");
+    assert!(m.starts_with("scene.toml:13:"), "{m}");
+    // Zero too, and in a material table of its own.
+    let text = edit(
+        "material = \"basalt-study\"\n",
+        "[body.material]\nbase = \"basalt-study\"\ndensity = 0.0\n",
+    );
+    // The table must come after the body's plain keys.
+    let text = text.replace(
+        "[body.material]\nbase = \"basalt-study\"\ndensity = 0.0\nshape",
+        "shape",
+    );
+    let text = text.replace(
+        "placement = { kind = \"lattice\", spacing = 0.5e-3 }\n\n[diagnostics]",
+        "placement = { kind = \"lattice\", spacing = 0.5e-3 }\n[body.material]\nbase = \"basalt-study\"\ndensity = 0.0\n\n[diagnostics]",
+    );
+    let m = message(&text);
+    assert!(m.contains("`density` = 0 is invalid"), "{m}");
+    assert!(
+        m.starts_with("scene.toml:17:11: body \"target\": `material.density`"),
+        "{m}"
+    );
+}
+
+#[test]
+fn inline_material_is_read_like_a_material_file() {
+    let text = edit(
+        "material = \"basalt-study\"",
+        "material = { base = \"basalt-study\", strength = { cohesion = 30e6 } }",
+    );
+    let s = Scene::from_toml_str(&text, "scene.toml").unwrap();
+    let m = s.materials().unwrap();
+    assert_eq!(m[1].name, "target"); // the body's name when the table has none
+    assert_eq!(m[1].density, 2876.0);
+    // A misspelt key inside it is reported at its place in the scene.
+    let text = edit(
+        "material = \"basalt-study\"",
+        "material = { base = \"basalt-study\", strength = { cohesoin = 30e6 } }",
+    );
+    let m = message(&text);
+    assert!(m.contains("cohesoin"), "{m}");
+    assert!(m.starts_with("scene.toml:13:"), "{m}");
+}
+
+#[test]
+fn overlapping_bodies() {
+    // The ball dips 1 mm into the block.
+    let text = edit("centre = [0.0, 0.0, 2.0e-3]", "centre = [0.0, 0.0, 0.5e-3]");
+    let scene = Scene::from_toml_str(&text, "scene.toml").unwrap();
+    let e = scene.place(1.0).unwrap_err();
+    let m = e.to_string();
+    println!("{m}");
+    assert_eq!(m.lines().count(), 1);
+    assert!(matches!(e.kind, SceneErrorKind::Overlap { .. }));
+    assert!(
+        m.starts_with("scene.toml:7:9: body \"projectile\": `shape`: overlaps body \"target\":"),
+        "{m}"
+    );
+    // `build` reports the same.
+    assert_eq!(scene.build().err().unwrap().to_string(), m);
+}
+
+#[test]
+fn unknown_keys() {
+    let m = message(&edit("velocity =", "velocty ="));
+    assert!(
+        m.starts_with(
+            "scene.toml:9:1: body \"projectile\": `velocty`: unknown key `velocty`, expected one of"
+        ),
+        "{m}"
+    );
+    let m = message(&edit("seed = 3", "sead = 3"));
+    assert!(
+        m.starts_with("scene.toml:2:1: `sead`: unknown key `sead`"),
+        "{m}"
+    );
+    let m = message(&edit("radius = 1.5e-3", "radius = 1.5e-3, length = 2e-3"));
+    assert!(
+        m.contains("unknown key `length`, expected `centre` or `radius`"),
+        "{m}"
+    );
+    assert!(m.starts_with("scene.toml:7:"), "{m}");
+    let m = message(&format!(
+        "{BASE}[solver]\ncfl = 0.2\nkernal = \"wendland-c2\"\n"
+    ));
+    assert!(
+        m.starts_with("scene.toml:22:1: `solver.kernal`: unknown key `kernal`"),
+        "{m}"
+    );
+}
+
+#[test]
+fn end_time_not_positive() {
+    for bad in ["0.0", "-1.0e-6"] {
+        let m = message(&edit("end_time = 1.0e-6", &format!("end_time = {bad}")));
+        assert!(m.starts_with("scene.toml:1:12: `end_time`:"), "{m}");
+        assert!(m.contains("the end time (s) must be positive"), "{m}");
+    }
+    let m = message(&edit("end_time = 1.0e-6\n", ""));
+    assert_eq!(m, "scene.toml: `end_time`: missing field `end_time`");
+    let m = message(&edit("radius = 1.5e-3 ", ""));
+    assert!(
+        m.starts_with(
+            "scene.toml:7:9: body \"projectile\": `shape.radius`: missing field `radius`"
+        ),
+        "{m}"
+    );
+}
+
+#[test]
+fn other_bad_values() {
+    let m = message(&edit(
+        "spacing = 0.5e-3 }\nvelocity",
+        "spacing = -0.5e-3 }\nvelocity",
+    ));
+    assert!(m.starts_with("scene.toml:8:"), "{m}");
+    assert!(
+        m.contains("body \"projectile\": `placement.spacing`"),
+        "{m}"
+    );
+    let m = message(&format!("geometry = \"rz\"\n{BASE}"));
+    assert!(
+        m.starts_with(
+            "scene.toml:1:12: `geometry`: axisymmetric (RZ) geometry is not implemented yet"
+        ),
+        "{m}"
+    );
+    let m = message(&format!("{BASE}[solver]\ncfl = 2.0\n"));
+    assert!(m.starts_with("scene.toml:21:7: `solver.cfl`:"), "{m}");
+    let m = message(&edit("name = \"target\"", "name = \"projectile\""));
+    assert!(m.contains("used twice"), "{m}");
+}
+
+#[test]
+fn bundled_scenes_round_trip() {
+    for name in [
+        "basalt_3.9kms.toml",
+        "basalt_3.47kms.toml",
+        "basalt_2.3kms.toml",
+        "smoke.toml",
+    ] {
+        let path = scene_file(name);
+        let scene = Scene::from_toml_file(&path).unwrap();
+        let text = scene.to_toml().unwrap();
+        let again = Scene::from_toml_str(&text, name).unwrap();
+        assert_eq!(again, scene, "{name}:\n{text}");
+        if name.starts_with("basalt") {
+            // Table 1 of the study.
+            let u: f64 = name[7..name.find("kms").unwrap()].parse().unwrap();
+            assert_eq!(scene.end_time, 400e-6);
+            assert_eq!(scene.bodies[0].velocity, [0.0, 0.0, -u * 1e3]);
+            let setup = scene.diagnostic_setup(1.0).unwrap();
+            assert!((setup.impact_speed - u * 1e3).abs() < 1e-9);
+            let s = scene.scheme();
+            assert_eq!((s.n_target, s.cfl), (2.5, 0.25));
+            assert_eq!(s.artificial_stress.epsilon, 0.2);
+            assert_eq!(s.artificial_stress.exponent, 4);
+            let m = scene.materials().unwrap();
+            assert_eq!(
+                (m[0].name.as_str(), m[1].name.as_str()),
+                ("aluminium-2024-jc", "basalt-study")
+            );
+        }
+    }
+}
+
+#[test]
+fn check_the_study_scene() {
+    let scene = Scene::from_toml_file(scene_file("basalt_3.9kms.toml")).unwrap();
+    let t = std::time::Instant::now();
+    let report = scene.check_report(1.0, 2, None).unwrap();
+    println!("{}", report.to_text());
+    println!("check took {:.2} s", t.elapsed().as_secs_f64());
+    let p = &report.bodies[0];
+    let tgt = &report.bodies[1];
+    // docs/placement.md: 896 projectile and 1 004 456 target particles.
+    assert_eq!(p.particles, 896);
+    assert_eq!(tgt.particles, 1_004_456);
+    for b in &report.bodies {
+        assert!(
+            b.mass_error.unwrap().abs() < 1e-9,
+            "{}: {:?}",
+            b.name,
+            b.mass_error
+        );
+    }
+    // λ Δx / (c_L,Al + U) = 0.25 · 0.5 mm / (6300 + 3900) m/s.
+    assert!((report.first_dt_s / (0.25 * 0.5e-3 / (6300.0 + 3900.0)) - 1.0).abs() < 1e-3);
+    assert!(report.runtime_s > 0.0 && report.memory_bytes > 1e9);
+}
+
+#[test]
+fn smoke_scene_runs_end_to_end() {
+    let scene = Scene::from_toml_file(scene_file("smoke.toml")).unwrap();
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("scene-smoke");
+    let _ = std::fs::remove_dir_all(&dir);
+    let options = RunOptions {
+        quiet: true,
+        ..RunOptions::default()
+    };
+    let summary = run(&scene, &dir, &options).unwrap();
+    for f in [
+        "summary.json",
+        "history.csv",
+        "run.pvd",
+        "snapshots/00000.vtu",
+        "snapshots/00004.vtu",
+        "crater_section.png",
+        "history.png",
+        "ejecta.png",
+        "projectile_energy.png",
+    ] {
+        assert!(dir.join(f).is_file(), "{f} missing");
+    }
+    let json: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap()).unwrap();
+    for key in [
+        "crater_diameter_m",
+        "bowl_diameter_m",
+        "crater_depth_m",
+        "beta",
+        "beta_target",
+        "ejecta_mass_kg",
+        "particles",
+        "steps",
+        "wall_time_s",
+        "particle_steps_per_s",
+        "version",
+        "scene",
+    ] {
+        assert!(json.get(key).is_some(), "summary.json lacks {key}");
+    }
+    assert_eq!(json["scene"]["body"][1]["name"], "target");
+    assert_eq!(json["particles"], summary.particles);
+    // Momentum is conserved, so both βs agree; energy too (compatible form).
+    assert!(
+        (summary.beta - summary.beta_target).abs() < 1e-9,
+        "{summary:?}"
+    );
+    assert!(summary.beta >= 1.0);
+    assert!(summary.energy_error.abs() < 1e-9);
+    let history = std::fs::read_to_string(dir.join("history.csv")).unwrap();
+    assert!(history.starts_with("t_s,step,dt_s,beta,"));
+    assert_eq!(history.lines().count() as u64, summary.steps + 2);
+    let pvd = std::fs::read_to_string(dir.join("run.pvd")).unwrap();
+    assert_eq!(pvd.matches("<DataSet").count(), 5);
+    println!(
+        "smoke: {} particles, {} steps, β {:.4}, crater Ø {:.2} mm, depth {:.2} mm, {:.1} s",
+        summary.particles,
+        summary.steps,
+        summary.beta,
+        summary.crater_diameter_m * 1e3,
+        summary.crater_depth_m * 1e3,
+        summary.wall_time_s
+    );
+}
+
+#[test]
+fn command_line_exit_codes() {
+    let exe = env!("CARGO_BIN_EXE_sph-impact");
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("scene-cli");
+    std::fs::create_dir_all(&dir).unwrap();
+    let bad = dir.join("bad.toml");
+    std::fs::write(&bad, edit("end_time = 1.0e-6", "end_time = -1.0")).unwrap();
+    for cmd in ["run", "check"] {
+        let out = std::process::Command::new(exe)
+            .args([cmd, bad.to_str().unwrap()])
+            .output()
+            .unwrap();
+        assert_eq!(out.status.code(), Some(2), "{cmd}");
+        let err = String::from_utf8(out.stderr).unwrap();
+        assert_eq!(err.lines().count(), 1, "{err}");
+        assert!(
+            err.starts_with("error: ") && err.contains("bad.toml:1:12: `end_time`"),
+            "{err}"
+        );
+    }
+    let out = std::process::Command::new(exe)
+        .args(["check", "--json"])
+        .arg(scene_file("smoke.toml"))
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(0));
+    let report: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(report["bodies"][1]["particles"], 2048);
+    let out = std::process::Command::new(exe)
+        .args(["materials", "--json"])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(0));
+    let list: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(list[0]["name"], "basalt-study");
+    assert_eq!(list[0]["parameters"]["eos"]["model"], "tillotson");
+}
