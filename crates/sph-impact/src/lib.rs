@@ -5,8 +5,11 @@
 //! with the adaptive CFL step, smoothing-length (scalar or ASPH) update, boundaries
 //! (free surface, reflecting wall, periodic) — and the verification problems.
 //!
-//! **Status:** fluid dynamics (ideal gas and any `EquationOfState`). Strength, damage,
-//! scenes, impact diagnostics and the full command-line program follow.
+//! **Status:** fluids and solids in 1-D, 2-D (plane strain) and 3-D: any
+//! `EquationOfState`, deviatoric stress with a `StrengthModel` (Jaumann rate, radial
+//! return), damage with a `DamageModel` (damaged pressure, (1 − D)S, b_ij in v*), artificial
+//! stress (pressure or tensor form), held particles. The axisymmetric (RZ) geometry
+//! follows.
 //!
 //! Impact runs: [`scene`] reads a TOML scene (or builds one in Rust) and turns it into a
 //! [`Simulation`]; [`run`] steps it to the end time and writes snapshots, history, summary
