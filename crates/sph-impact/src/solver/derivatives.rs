@@ -215,7 +215,7 @@ pub(crate) fn rates<D: Dimension, P: PairKernel<D>>(
                     let gi = &gr[i];
                     let src = &gr[ext.source[j] as usize];
                     // A ghost's gradients are its source's, mapped: M L Mᵀ and M ∇P.
-                    let m = &ext.map[j];
+                    let m = &ext.map(j);
                     let (lj, gpj) = if j < ext.n_real {
                         (src.velocity, src.pressure)
                     } else {

@@ -465,6 +465,9 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
                 0.5 * dt,
             );
         }
+        // The first stage's rates are spent: free them before the second stage allocates
+        // its own (peak memory per particle).
+        drop(s0);
         self.timings.integration += t0.elapsed().as_secs_f64();
         let (s1, _) = self.stage(&mut half)?;
         let t1 = Instant::now();

@@ -49,9 +49,10 @@ pub(crate) struct Extended<D: Dimension> {
     pub material: Vec<u16>,
     /// For ghosts: the real particle they copy (themselves for real particles).
     pub source: Vec<u32>,
-    /// For ghosts: the map from the source's vectors to the ghost's (reflection or
-    /// identity); identity for real particles.
-    pub map: Vec<D::Tensor>,
+    /// For ghosts only (index k − n_real): the map from the source's vectors to the
+    /// ghost's (reflection or identity); real particles map by the identity, which is not
+    /// stored (72 bytes per particle in 3-D).
+    pub ghost_map: Vec<D::Tensor>,
     /// Damaged deviatoric stress (1 − D) S (empty without strength); ghosts carry M S Mᵀ.
     pub stress: Vec<sph_core::glam::DMat3>,
     /// Damage D (empty without damage).
@@ -61,6 +62,16 @@ pub(crate) struct Extended<D: Dimension> {
 }
 
 impl<D: Dimension> Extended<D> {
+    /// The map of particle k's vectors from its source's (identity for real particles).
+    #[inline]
+    pub fn map(&self, k: usize) -> D::Tensor {
+        if k < self.n_real {
+            D::Tensor::IDENTITY
+        } else {
+            self.ghost_map[k - self.n_real]
+        }
+    }
+
     /// Copies the real particles and appends the ghosts of every boundary, each
     /// boundary seeing the real particles and the ghosts made before it (so corners
     /// of two periodic axes are filled).
@@ -89,7 +100,7 @@ impl<D: Dimension> Extended<D> {
             spacing0: state.spacing0.clone(),
             material: p.material.clone(),
             source: (0..n as u32).collect(),
-            map: vec![D::Tensor::IDENTITY; n],
+            ghost_map: Vec::new(),
             stress: if damage.is_empty() {
                 state.stress.clone()
             } else {
@@ -128,8 +139,8 @@ impl<D: Dimension> Extended<D> {
                 ext.spacing0.push(ext.spacing0[s]);
                 ext.material.push(ext.material[s]);
                 ext.source.push(ext.source[s]);
-                let composed = g.map.mul_tensor(&ext.map[s]);
-                ext.map.push(composed);
+                let composed = g.map.mul_tensor(&ext.map(s));
+                ext.ghost_map.push(composed);
                 if !ext.stress.is_empty() {
                     // A stress maps as a tensor: S' = M S Mᵀ with M the reflection in 3-D.
                     let m = D::embed(&g.map)
