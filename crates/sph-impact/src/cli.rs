@@ -11,11 +11,15 @@ pub fn verify(
     scheme: Option<&str>,
     out: Option<&Path>,
     json: bool,
+    rz: bool,
 ) -> Result<(), String> {
     let scheme = scheme_with_overrides(problem.default_scheme(), scheme)?;
-    let outcome = problem
-        .run_with(resolution, scheme)
-        .map_err(|e| e.to_string())?;
+    let outcome = if rz {
+        problem.run_rz(resolution, scheme)
+    } else {
+        problem.run_with(resolution, scheme)
+    }
+    .map_err(|e| e.to_string())?;
     if json {
         println!(
             "{}",

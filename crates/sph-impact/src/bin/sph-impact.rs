@@ -65,7 +65,7 @@ enum Command {
     /// Run one verification problem and compare with its exact solution.
     Verify {
         /// sod, toro123, toro3, noh-planar, noh-cylindrical, noh-spherical, sedov-2d, sedov-3d,
-        /// elastic-bar, hel-impact, spin, contact
+        /// elastic-bar, hel-impact, spin, contact, plate, rings, taylor, tensile-bar
         problem: Problem,
         /// Resolution (problem-specific: see docs/verification.md).
         #[arg(long)]
@@ -80,6 +80,10 @@ enum Command {
         /// Print the metrics as one JSON object.
         #[arg(long)]
         json: bool,
+        /// Geometry: `3d` (the problem's own) or `rz` (axisymmetric, for sedov-3d,
+        /// noh-spherical and taylor).
+        #[arg(long, default_value = "3d", value_parser = ["3d", "rz"])]
+        geometry: String,
     },
 }
 
@@ -123,8 +127,16 @@ fn main() -> ExitCode {
             scheme,
             out,
             json,
-        } => sph_impact::cli::verify(problem, resolution, scheme.as_deref(), out.as_deref(), json)
-            .map_err(CommandError::failed),
+            geometry,
+        } => sph_impact::cli::verify(
+            problem,
+            resolution,
+            scheme.as_deref(),
+            out.as_deref(),
+            json,
+            geometry == "rz",
+        )
+        .map_err(CommandError::failed),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

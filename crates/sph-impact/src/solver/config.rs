@@ -123,6 +123,9 @@ pub struct SchemeConfig {
     pub unbonded_interfaces: bool,
     /// Smoothing-length evolution.
     pub smoothing: SmoothingMode,
+    /// What a 2-D run stands for: the plane, or rings about the z axis (RZ; see
+    /// [`crate::solver::axisymmetric`]).
+    pub geometry: crate::solver::axisymmetric::Geometry,
 }
 
 impl Default for SchemeConfig {
@@ -152,6 +155,7 @@ impl Default for SchemeConfig {
             h_max_factor: 4.0,
             unbonded_interfaces: true,
             smoothing: SmoothingMode::Scalar,
+            geometry: crate::solver::axisymmetric::Geometry::Cartesian,
         }
     }
 }

@@ -52,6 +52,11 @@ pub(crate) struct Rates<D: Dimension> {
     pub work: f64,
     /// Jaumann rate of the deviatoric stress, dS/dt (zero for fluids).
     pub ds: sph_core::glam::DMat3,
+    /// RZ only: the pair sums' own estimate of ∂r/∂r, ŝ_i = r_i Σ_j V_j ∂_r W_ij plus
+    /// Σ_j V_j r_j ∂_r W_ij with V_j = m_j/(ρ_j R̂_j), which the hoop force uses so that a
+    /// uniform stress is in equilibrium also next to the axis (axisymmetric.rs); 1 in
+    /// Cartesian runs.
+    pub hoop_gauge: f64,
 }
 
 /// Summation density ρ_i = m_i W(0) + Σ_j m_j W̄_ij over real particles.
@@ -59,16 +64,24 @@ pub(crate) fn summation_density<D: Dimension, P: PairKernel<D>>(
     ext: &Extended<D>,
     list: &NeighborList,
     pk: &P,
+    rz_radius: Option<&crate::solver::axisymmetric::SmoothedRadius>,
 ) -> Vec<f64> {
+    let rz = !ext.radius.is_empty();
     (0..ext.n_real)
         .into_par_iter()
         .map(|i| {
             let xi = ext.position[i];
-            let self_term = ext.mass[i] * pk.w(i, i, D::Vector::ZERO);
-            list.neighbors(i).iter().fold(self_term, |acc, &j| {
+            let w0 = pk.w(i, i, D::Vector::ZERO);
+            let eta = list.neighbors(i).iter().fold(ext.mass[i] * w0, |acc, &j| {
                 let j = j as usize;
                 acc + ext.mass[j] * pk.w(i, j, xi - ext.position[j])
-            })
+            });
+            match rz_radius {
+                // RZ: Σ m W of a uniform density is ρ R̂(r, h), the kernel-smoothed |r|
+                // (larger than r next to the axis, where the mirror images sit).
+                Some(s) if rz => eta / s.at(ext.radius[i], pk.h(i)),
+                _ => eta,
+            }
         })
         .collect()
 }
@@ -81,6 +94,15 @@ pub(crate) fn gradients<D: Dimension, P: PairKernel<D>>(
     correct: bool,
     correct_strain: bool,
 ) -> Vec<Gradients<D>> {
+    let rz = !ext.radius.is_empty();
+    // The 2-D density of the pair sums: η = ρ r in RZ (ring masses per radian).
+    let eta = |k: usize| {
+        if rz {
+            ext.density[k] * ext.smoothed_radius[k]
+        } else {
+            ext.density[k]
+        }
+    };
     (0..ext.n_real)
         .into_par_iter()
         .map(|i| {
@@ -96,13 +118,13 @@ pub(crate) fn gradients<D: Dimension, P: PairKernel<D>>(
                 let j = j as usize;
                 let dx = ext.position[j] - xi;
                 let g = pk.grad(i, j, -dx);
-                let vol = ext.mass[j] / ext.density[j];
+                let vol = ext.mass[j] / eta(j);
                 l += D::Tensor::outer(ext.velocity[j] - vi, g) * vol;
                 gp += g * ((ext.pressure[j] - pi) * vol);
                 m += D::Tensor::outer(dx, g) * vol;
                 dwdh += ext.mass[j] * pk.dw_dh_own(i, dx);
             }
-            let omega = 1.0 + hi / (d * ext.density[i]) * dwdh;
+            let omega = 1.0 + hi / (d * eta(i)) * dwdh;
             // L = L_raw M⁻¹ and ∇P = M⁻ᵀ ∇P_raw are exact for linear fields. A nearly
             // singular M (a particle with too few neighbours) keeps the raw estimates.
             // M⁻¹ when either use wants it: the continuity equation and reconstruction
@@ -163,10 +185,17 @@ pub(crate) fn rates<D: Dimension, P: PairKernel<D>>(
     let damaged = !ext.damage.is_empty();
     let astress = scheme.artificial_stress;
     let use_astress = !ext.astress.is_empty();
+    // RZ: the pair terms carry the weights r (pressure and stress r σ, density η = ρ r;
+    // axisymmetric.rs); Cartesian runs have r = 1 throughout.
+    let rz = !ext.radius.is_empty();
+    let radius = |k: usize| if rz { ext.radius[k] } else { 1.0 };
+    let smooth_r = |k: usize| if rz { ext.smoothed_radius[k] } else { 1.0 };
     (0..ext.n_real)
         .into_par_iter()
         .map(|i| {
             let (xi, vi) = (ext.position[i], ext.velocity[i]);
+            let ri = radius(i);
+            let (mut gauge_a, mut gauge_g) = (0.0, 0.0);
             let (rhoi, pi, ci, mi_mat) = (
                 ext.density[i],
                 ext.pressure[i],
@@ -187,7 +216,9 @@ pub(crate) fn rates<D: Dimension, P: PairKernel<D>>(
                 dv_boundary: D::Vector::ZERO,
                 work: 0.0,
                 ds: sph_core::glam::DMat3::ZERO,
+                hoop_gauge: 1.0,
             };
+            let etai = rhoi * smooth_r(i);
             for &j in list.neighbors(i) {
                 let j = j as usize;
                 let r = xi - ext.position[j];
@@ -263,12 +294,17 @@ pub(crate) fn rates<D: Dimension, P: PairKernel<D>>(
                     scheme.coupling,
                 );
 
+                let rj = radius(j);
+                let etaj = rhoj * smooth_r(j);
+                let r_bar = 0.5 * (ri + rj);
                 let h_bar = scheme.viscosity_length_factor * 0.5 * (pk.h(i) + pk.h(j));
-                let pi_ij = visc.pi(vij, r, 0.5 * (rhoi + rhoj), 0.5 * (ci + cj), h_bar);
+                // In RZ the viscous pressure is weighted like the pressure: × r̄/(r_i r_j).
+                let pi_ij = visc.pi(vij, r, 0.5 * (rhoi + rhoj), 0.5 * (ci + cj), h_bar)
+                    * (r_bar / (ri * rj));
                 // Artificial stress: m_j f_ij^n (R_i + R_j)·∇_i W (paper §2.3; R from the
                 // total stress, repulsive in tension).
                 let a_force = if use_astress {
-                    let r_sum = ext.astress[i] + ext.astress[j];
+                    let r_sum = ext.astress[i] * (1.0 / ri) + ext.astress[j] * (1.0 / rj);
                     if r_sum.double_dot(&r_sum) > 0.0 {
                         let dp = 0.5 * (ext.spacing0[i] + ext.spacing0[j]);
                         let f = (pk.w(i, j, r) / pk.w_at(i, j, r_hat, dp)).powi(astress.exponent);
@@ -282,17 +318,19 @@ pub(crate) fn rates<D: Dimension, P: PairKernel<D>>(
                 // The pressure part of the pair force: the particles' pressures (the
                 // study's σ_i + σ_j), or twice the pair's Riemann star pressure.
                 let p_pair = match scheme.momentum {
-                    MomentumForm::ParticlePressure => pi + pj,
-                    MomentumForm::StarPressure => 2.0 * scheme.riemann.star(&left, &right).pressure,
+                    MomentumForm::ParticlePressure => ri * pi + rj * pj,
+                    MomentumForm::StarPressure => {
+                        2.0 * r_bar * scheme.riemann.star(&left, &right).pressure
+                    }
                 };
-                let coef = -p_pair / (rhoi * rhoj) - pi_ij;
+                let coef = -p_pair / (etai * etaj) - pi_ij;
                 // Pair force per unit mass of i: m_j[(σ_i + σ_j)/(ρ_iρ_j) − Π]∇W + the
                 // artificial stress, with σ = (1 − D) S − P_D I; symmetric in (i, j) up to
                 // the antisymmetric ∇W.
                 let mut force = g * (mj * coef) + a_force;
                 if solid {
                     let sj = D::project(&ext.stress[j]);
-                    force += (si + sj).mul_vec(g) * (mj / (rhoi * rhoj));
+                    force += (si * ri + sj * rj).mul_vec(g) * (mj / (etai * etaj));
                 }
                 // An unbonded interface carries no tension: a pair of different materials
                 // whose force would pull i toward j does not interact at all (no force, and
@@ -306,6 +344,11 @@ pub(crate) fn rates<D: Dimension, P: PairKernel<D>>(
                 if j >= ext.n_real {
                     out.dv_boundary += force;
                 }
+                if rz {
+                    let vx = mj / etaj * g.component(0);
+                    gauge_a += vx;
+                    gauge_g += vx * rj;
+                }
                 // The continuity equation uses the corrected gradient when enabled.
                 let gc = match grads {
                     Some(gr) if scheme.gradient_correction => gr[i].correction.mul_vec(g),
@@ -313,7 +356,7 @@ pub(crate) fn rates<D: Dimension, P: PairKernel<D>>(
                 };
                 let dvs = (vi - v_star).dot(gc);
                 out.drho += match scheme.density {
-                    DensityForm::Volume => 2.0 * rhoi * mj / rhoj * dvs,
+                    DensityForm::Volume => 2.0 * etai * mj / etaj * dvs,
                     DensityForm::Mass => 2.0 * mj * dvs,
                     // Summation density is recomputed from positions each stage.
                     DensityForm::Summation => 0.0,
@@ -330,12 +373,13 @@ pub(crate) fn rates<D: Dimension, P: PairKernel<D>>(
                         // −2 m_j/(ρ_iρ_j) (v_i − v*)·(σ_i ∇W) with σ_i = S_i − P_i I, plus
                         // the viscous and artificial-stress heating.
                         let shear = if solid {
-                            -2.0 * mj / (rhoi * rhoj) * (vi - v_star).dot(si.mul_vec(g))
+                            -2.0 * mj * ri / (etai * etaj) * (vi - v_star).dot(si.mul_vec(g))
                         } else {
                             0.0
                         };
                         shear
-                            + mj * (2.0 * pi / (rhoi * rhoj) * dvs_plain + 0.5 * pi_ij * vij.dot(g))
+                            + mj * (2.0 * ri * pi / (etai * etaj) * dvs_plain
+                                + 0.5 * pi_ij * vij.dot(g))
                             - 0.5 * vij.dot(a_force)
                     }
                 };
@@ -349,6 +393,9 @@ pub(crate) fn rates<D: Dimension, P: PairKernel<D>>(
                 && let Some(gr) = grads
             {
                 out.drho /= gr[i].omega.clamp(0.5, 2.0);
+            }
+            if rz {
+                out.hoop_gauge = ri * gauge_a + gauge_g;
             }
             // dS/dt = 2G ε̇' + ΩS − SΩ with the particle's velocity gradient embedded in 3-D
             // (1-D uniaxial and 2-D plane strain: the out-of-plane rates are zero).

@@ -1,5 +1,6 @@
 //! The Riemann-SPH solver (paper §2): state, derivatives, time integration.
 
+pub mod axisymmetric;
 pub mod boundary;
 pub mod config;
 mod damage;
@@ -11,6 +12,7 @@ pub mod simulation;
 pub mod state;
 pub mod timestep;
 
+pub use axisymmetric::Geometry;
 pub use boundary::Boundary;
 pub use config::{DensityForm, EnergyForm, MomentumForm, SchemeConfig, SmoothingMode};
 pub use damage::DamageEvents;

@@ -1,6 +1,9 @@
 //! The simulation: state, materials, scheme and boundaries, advanced with the
 //! second-order Runge–Kutta (midpoint) method and the adaptive CFL step (paper §2.5).
 
+use crate::solver::axisymmetric::{
+    Geometry, HoopInput, SmoothedRadius, add_hoop_terms, area_mass, radius,
+};
 use crate::solver::boundary::Boundary;
 use crate::solver::config::{DensityForm, EnergyForm, SchemeConfig, SmoothingMode};
 use crate::solver::damage::{
@@ -110,6 +113,8 @@ pub struct Simulation<D: Dimension, K: Kernel> {
     /// Particles whose velocity is held at its value (a clamp, a driven end); empty
     /// when none. See [`Self::hold_velocity`].
     held: Vec<bool>,
+    /// RZ with summation density: the kernel-smoothed radius table.
+    smoothed_radius: Option<SmoothedRadius>,
     kernel: K,
     search: CellList,
 }
@@ -139,6 +144,18 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
         for (index, b) in boundaries.iter().enumerate() {
             b.validate()
                 .map_err(|reason| SolverError::BadBoundary { index, reason })?;
+        }
+        let mut boundaries = boundaries;
+        if scheme.geometry == Geometry::Axisymmetric {
+            check_axisymmetric(&particles)?;
+            // The axis is a mirror: ghosts with v_r and S_rz reversed.
+            let axis = Boundary::Wall {
+                point: D::Vector::ZERO,
+                normal: D::Vector::unit(0),
+            };
+            if !boundaries.contains(&axis) {
+                boundaries.push(axis);
+            }
         }
         let n = particles.len();
         let spacing0 = spacing0.unwrap_or_else(|| {
@@ -170,6 +187,7 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
             (Vec::new(), Vec::new())
         };
         let (damage_state, damage_index) = damage_setup(&particles, &materials)?;
+        let rz = scheme.geometry == Geometry::Axisymmetric;
         Ok(Self {
             state: State {
                 particles,
@@ -190,6 +208,11 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
             boundary_impulse: D::Vector::ZERO,
             damage_events: DamageEvents::default(),
             held: Vec::new(),
+            smoothed_radius: rz.then(|| {
+                SmoothedRadius::new(|u, v| {
+                    kernel.w(D::Vector::from_fn(|k| if k == 0 { u } else { v }), 1.0)
+                })
+            }),
             kernel,
             search: CellList::new(),
         })
@@ -295,6 +318,17 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
             &support,
             &self.boundaries,
         );
+        let rz = self.scheme.geometry == Geometry::Axisymmetric;
+        if rz {
+            ext.radius = ext.position.iter().map(|x| radius(*x)).collect();
+            let table = self.smoothed_radius.as_ref().expect("RZ has the table");
+            ext.smoothed_radius = ext
+                .radius
+                .iter()
+                .zip(&ext.h)
+                .map(|(&r, &h)| table.at(r, h))
+                .collect();
+        }
         let list = if ext.h_tensor.is_empty() {
             self.search
                 .neighbors(&ext.position, &ScalarSupport::new(&ext.h)?)?
@@ -309,6 +343,7 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
                     &ext,
                     &list,
                     &ScalarPairKernel::new(self.kernel, &ext.h, D::DIM),
+                    self.smoothed_radius.as_ref(),
                 )
             } else {
                 summation_density(
@@ -319,6 +354,7 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
                         h_tensor: &ext.h_tensor,
                         h: &ext.h,
                     },
+                    self.smoothed_radius.as_ref(),
                 )
             };
             state.particles.density = rho;
@@ -379,6 +415,22 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
             );
             (g, r, t3)
         };
+        let mut rates_out = rates_out;
+        if rz {
+            add_hoop_terms(
+                &HoopInput {
+                    particles: &state.particles,
+                    stress: &state.stress,
+                    damage: &damage,
+                    pressure: &pressure_d,
+                    shear_modulus: &shear_modulus,
+                    grads: grads.as_deref(),
+                    energy: self.scheme.energy,
+                    smoothed_radius: self.smoothed_radius.as_ref().expect("RZ has the table"),
+                },
+                &mut rates_out,
+            );
+        }
         let spacing: Vec<f64> = if damage.is_empty() {
             Vec::new()
         } else {
@@ -582,12 +634,20 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
             SmoothingMode::Scalar => {
                 let (m, rho) = (&p.mass, &p.density);
                 let (s0, cap) = (&y.spacing0, self.scheme.h_max_factor);
+                let x = &p.position;
+                let rz = self.scheme.geometry == Geometry::Axisymmetric;
                 p.smoothing_length
                     .par_iter_mut()
                     .enumerate()
                     .for_each(|(i, h)| {
+                        // The area (or volume) per particle: m/ρ, in RZ (m/r)/ρ.
+                        let mi = if rz {
+                            area_mass(m[i], radius(x[i]))
+                        } else {
+                            m[i]
+                        };
                         if rho[i] > 0.0 {
-                            *h = (n_target * (m[i] / rho[i]).powf(1.0 / d))
+                            *h = (n_target * (mi / rho[i]).powf(1.0 / d))
                                 .min(cap * n_target * s0[i]);
                         }
                     });
@@ -600,7 +660,12 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
                     .into_par_iter()
                     .map(|i| {
                         let target = if rho[i] > 0.0 {
-                            n_target * (m[i] / rho[i]).powf(1.0 / d)
+                            let mi = if self.scheme.geometry == Geometry::Axisymmetric {
+                                area_mass(m[i], radius(p.position[i]))
+                            } else {
+                                m[i]
+                            };
+                            n_target * (mi / rho[i]).powf(1.0 / d)
                         } else {
                             1.0 / h_src[i].sym_eigen().values[0]
                         };
@@ -795,6 +860,31 @@ fn longitudinal_speeds(sound_speed: &[f64], shear_modulus: &[f64], density: &[f6
             }
         })
         .collect()
+}
+
+/// RZ needs 2-D particles strictly off the axis (x = r > 0).
+fn check_axisymmetric<D: Dimension>(p: &Particles<D>) -> Result<(), SolverError> {
+    if D::DIM != 2 {
+        return Err(SolverError::BadConfig {
+            field: "geometry",
+            value: D::DIM as f64,
+            reason: "axisymmetric (RZ) runs are 2-D: (r, z) particles",
+        });
+    }
+    for (i, x) in p.position.iter().enumerate() {
+        if !(x.component(0) > 0.0) {
+            return Err(SolverError::BadConfig {
+                field: "geometry",
+                value: x.component(0),
+                reason: if i == 0 {
+                    "RZ particle 0 has r ≤ 0: every particle needs r = x > 0"
+                } else {
+                    "an RZ particle has r ≤ 0: every particle needs r = x > 0"
+                },
+            });
+        }
+    }
+    Ok(())
 }
 
 /// P_D of every particle (P itself without damage).

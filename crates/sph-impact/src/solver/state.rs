@@ -59,6 +59,12 @@ pub(crate) struct Extended<D: Dimension> {
     pub damage: Vec<f64>,
     /// Artificial-stress tensor R (empty when the artificial stress is off).
     pub astress: Vec<D::Tensor>,
+    /// RZ only: each particle's radius r = |x| (ghosts mirrored across the axis keep their
+    /// source's); empty in Cartesian runs.
+    pub radius: Vec<f64>,
+    /// RZ only: the kernel-smoothed radius R̂(r, h) that the denominators η = ρ R̂ use
+    /// (axisymmetric.rs); empty in Cartesian runs.
+    pub smoothed_radius: Vec<f64>,
 }
 
 impl<D: Dimension> Extended<D> {
@@ -113,6 +119,8 @@ impl<D: Dimension> Extended<D> {
             },
             damage: damage.to_vec(),
             astress: Vec::new(),
+            radius: Vec::new(),
+            smoothed_radius: Vec::new(),
         };
         let mut radius = support.to_vec();
         let mut ghosts: Vec<Ghost<D>> = Vec::new();

@@ -196,6 +196,27 @@ impl Problem {
         self.run_with(resolution, self.default_scheme())
     }
 
+    /// Runs the problem in axisymmetric RZ geometry (the 3-D problems that have an RZ
+    /// form: `sedov-3d`, `noh-spherical`, `taylor`), at `resolution` with the given scheme.
+    pub fn run_rz(
+        &self,
+        resolution: Option<usize>,
+        scheme: crate::SchemeConfig,
+    ) -> Result<Outcome, crate::SolverError> {
+        scheme.validate()?;
+        let n = resolution.unwrap_or(self.resolution_doc().1);
+        match self {
+            Problem::Sedov3d => sedov::run_rz(n, scheme),
+            Problem::NohSpherical => noh::run_spherical_rz(n, scheme),
+            Problem::Taylor => taylor::run_rz(n, scheme),
+            _ => Err(crate::SolverError::BadConfig {
+                field: "geometry",
+                value: 0.0,
+                reason: "this problem has no axisymmetric (RZ) form (sedov-3d, noh-spherical and taylor have)",
+            }),
+        }
+    }
+
     /// Runs the problem at `resolution` with the given scheme.
     pub fn run_with(
         &self,

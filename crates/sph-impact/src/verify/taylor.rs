@@ -13,8 +13,8 @@
 use super::outcome::{Outcome, Panel, Picture, Profile};
 use super::setup::simulation;
 use crate::{Boundary, Material, SchemeConfig, SolverError};
-use sph_core::glam::DVec3;
-use sph_core::{Dim3, ParticleInit, Particles};
+use sph_core::glam::{DVec2, DVec3};
+use sph_core::{Dim2, Dim3, ParticleInit, Particles};
 use sph_eos::{LinearElastic, LinearElasticParams};
 use sph_geometry::{Cylinder, cubic_lattice};
 use sph_strength::{VonMises, VonMisesParams, von_mises::LinearHardening};
@@ -27,8 +27,8 @@ const RADIUS: f64 = 3.2e-3;
 const SPEED: f64 = 227.0;
 const T_END: f64 = 80.0e-6;
 
-/// Runs with `n` lattice spacings across the rod's radius.
-pub(crate) fn run(n: usize, scheme: SchemeConfig) -> Result<Outcome, SolverError> {
+/// The copper of §6a: linear elastic EOS and von Mises with linear hardening.
+fn copper() -> Result<(LinearElastic, VonMises), SolverError> {
     let bad = |e: String| SolverError::Material(e);
     let bulk = E_YOUNG / (3.0 * (1.0 - 2.0 * NU));
     let shear = E_YOUNG / (2.0 * (1.0 + NU));
@@ -43,6 +43,13 @@ pub(crate) fn run(n: usize, scheme: SchemeConfig) -> Result<Outcome, SolverError
         hardening: Some(LinearHardening { modulus: 100.0e6 }),
     })
     .map_err(|e| bad(e.to_string()))?;
+    Ok((eos, strength))
+}
+
+/// Runs with `n` lattice spacings across the rod's radius.
+pub(crate) fn run(n: usize, scheme: SchemeConfig) -> Result<Outcome, SolverError> {
+    let bad = |e: String| SolverError::Material(e);
+    let (eos, strength) = copper()?;
     let dx = RADIUS / n as f64;
     let rod =
         Cylinder::new(DVec3::ZERO, DVec3::Z, RADIUS, LENGTH).map_err(|e| bad(e.to_string()))?;
@@ -100,86 +107,189 @@ pub(crate) fn run(n: usize, scheme: SchemeConfig) -> Result<Outcome, SolverError
         ke.push(sim.conserved().kinetic);
     }
     let p = &sim.state.particles;
-    let z_top = p.position.iter().fold(f64::NEG_INFINITY, |a, x| a.max(x.z));
-    let length = z_top + 0.5 * dx - anvil;
-    let face_radius = p
+    let rz: Vec<[f64; 2]> = p
         .position
         .iter()
-        .filter(|x| x.z < anvil + dx)
-        .map(|x| (x.x * x.x + x.y * x.y).sqrt())
-        .fold(0.0, f64::max)
-        + 0.5 * dx;
-    let (mut ep_max, mut ep_at) = (0.0f64, DVec3::ZERO);
-    for (i, &ep) in sim.state.plastic_strain.iter().enumerate() {
-        if ep > ep_max {
-            ep_max = ep;
-            ep_at = p.position[i];
+        .map(|x| [x.truncate().length(), x.z - anvil])
+        .collect();
+    // Quarter model: the full rod's KE0 is four times the quarter's.
+    let run = RodRun {
+        name: "taylor",
+        resolution: n,
+        steps,
+        wall_time_s: wall.elapsed().as_secs_f64(),
+        dx,
+        rz,
+        plastic_strain: sim.state.plastic_strain.clone(),
+        times,
+        kinetic: ke,
+        full_rod_factor: 4.0,
+    };
+    Ok(run.outcome())
+}
+
+/// The end state of a rod run in (r, height above the anvil) and its KE history.
+struct RodRun {
+    name: &'static str,
+    resolution: usize,
+    steps: u64,
+    wall_time_s: f64,
+    dx: f64,
+    rz: Vec<[f64; 2]>,
+    plastic_strain: Vec<f64>,
+    times: Vec<f64>,
+    kinetic: Vec<f64>,
+    /// The modelled part's KE times this is the full rod's (4 for a quarter, 2π for RZ
+    /// per radian).
+    full_rod_factor: f64,
+}
+
+impl RodRun {
+    /// L_f, R_f, the largest plastic strain and where, the KE history, the picture.
+    fn outcome(self) -> Outcome {
+        let dx = self.dx;
+        let length = self.rz.iter().fold(f64::NEG_INFINITY, |a, x| a.max(x[1])) + 0.5 * dx;
+        let face_radius = self
+            .rz
+            .iter()
+            .filter(|x| x[1] < dx)
+            .map(|x| x[0])
+            .fold(0.0, f64::max)
+            + 0.5 * dx;
+        let (mut ep_max, mut ep_at) = (0.0f64, [0.0, 0.0]);
+        for (i, &ep) in self.plastic_strain.iter().enumerate() {
+            if ep > ep_max {
+                ep_max = ep;
+                ep_at = self.rz[i];
+            }
+        }
+        let ke0 = self.kinetic[0];
+        let mut out = Outcome::for_run(
+            self.name,
+            self.rz.len(),
+            self.resolution,
+            Some(T_END),
+            self.steps,
+            self.wall_time_s,
+        );
+        out.set("final_length_mm", length * 1e3);
+        out.set("final_length_error_relative", length / 21.5e-3 - 1.0);
+        out.set("face_radius_mm", face_radius * 1e3);
+        out.set("face_radius_error_relative", face_radius / 7.1e-3 - 1.0);
+        out.set("plastic_strain_max", ep_max);
+        out.set("plastic_strain_max_radius_mm", ep_at[0] * 1e3);
+        out.set("plastic_strain_max_height_mm", ep_at[1] * 1e3);
+        out.set(
+            "kinetic_energy_final_over_initial",
+            self.kinetic.last().unwrap_or(&f64::NAN) / ke0,
+        );
+        out.set(
+            "kinetic_energy_initial_full_rod_j",
+            self.full_rod_factor * ke0,
+        );
+        // Profile: the particles' radius, height and plastic strain at the end.
+        let mut rows: Vec<Vec<f64>> = (0..self.rz.len())
+            .map(|i| vec![self.rz[i][0], self.rz[i][1], self.plastic_strain[i]])
+            .collect();
+        rows.sort_by(|a, b| a[0].total_cmp(&b[0]));
+        let (r, z): (Vec<f64>, Vec<f64>) =
+            rows.iter().map(|row| (row[0] * 1e3, row[1] * 1e3)).unzip();
+        out.profile = Profile {
+            columns: ["r", "z", "plastic_strain"].map(String::from).to_vec(),
+            rows,
+        };
+        out.pictures.push(Picture {
+            name: "taylor".into(),
+            title: format!(
+                "Taylor bar ({}): L_f = {:.2} mm (21.5), R_f = {:.2} mm (7.1)",
+                self.name,
+                length * 1e3,
+                face_radius * 1e3
+            ),
+            panels: vec![
+                Panel {
+                    title: "final shape (all particles, r against z)".into(),
+                    labels: ("r (mm)".into(), "z (mm)".into()),
+                    points: vec![("particles".into(), r, z)],
+                    equal_aspect: true,
+                    ..Default::default()
+                },
+                Panel {
+                    title: "kinetic energy (modelled part)".into(),
+                    labels: ("t (µs)".into(), "KE (J)".into()),
+                    lines: vec![(
+                        "SPH".into(),
+                        self.times.iter().map(|t| t * 1e6).collect(),
+                        self.kinetic,
+                    )],
+                    ..Default::default()
+                },
+            ],
+            columns: 2,
+        });
+        out
+    }
+}
+
+/// The rod in axisymmetric RZ: a square lattice with `n` spacings across R0 in the (r, z)
+/// half-plane, each particle a ring of mass ρ Δx² r per radian; the anvil a reflecting
+/// wall below the rod, the axis handled by the solver.
+pub(crate) fn run_rz(n: usize, mut scheme: SchemeConfig) -> Result<Outcome, SolverError> {
+    scheme.geometry = crate::Geometry::Axisymmetric;
+    let (eos, strength) = copper()?;
+    let dx = RADIUS / n as f64;
+    let nz = (LENGTH / dx).round() as usize;
+    let mut p = Particles::<Dim2>::new();
+    for a in 0..n {
+        for b in 0..nz {
+            let x = DVec2::new((a as f64 + 0.5) * dx, (b as f64 + 0.5) * dx);
+            p.push(ParticleInit {
+                position: x,
+                velocity: DVec2::new(0.0, -SPEED),
+                mass: RHO * dx * dx * x.x,
+                density: RHO,
+                specific_energy: 0.0,
+                smoothing_length: scheme.n_target * dx,
+                material: 0,
+            });
         }
     }
-    let mut out = Outcome::for_run(
-        "taylor",
-        p.len(),
-        n,
-        Some(T_END),
+    let count = p.len();
+    let mut sim = simulation(
+        p,
+        vec![Material::solid("copper (bilinear)", eos, strength)],
+        scheme,
+        vec![Boundary::Wall {
+            point: DVec2::ZERO,
+            normal: DVec2::Y,
+        }],
+        Some(vec![dx; count]),
+    )?;
+    let wall = std::time::Instant::now();
+    let (mut times, mut ke) = (vec![0.0], vec![sim.conserved().kinetic]);
+    let mut steps = 0;
+    for k in 1..=80 {
+        steps += sim.run_until(T_END * k as f64 / 80.0, |_, _| {})?;
+        times.push(sim.state.time);
+        ke.push(sim.conserved().kinetic);
+    }
+    let run = RodRun {
+        name: "taylor (rz)",
+        resolution: n,
         steps,
-        wall.elapsed().as_secs_f64(),
-    );
-    out.set("final_length_mm", length * 1e3);
-    out.set("final_length_error_relative", length / 21.5e-3 - 1.0);
-    out.set("face_radius_mm", face_radius * 1e3);
-    out.set("face_radius_error_relative", face_radius / 7.1e-3 - 1.0);
-    out.set("plastic_strain_max", ep_max);
-    out.set(
-        "plastic_strain_max_radius_mm",
-        ep_at.truncate().length() * 1e3,
-    );
-    out.set("plastic_strain_max_height_mm", (ep_at.z - anvil) * 1e3);
-    out.set(
-        "kinetic_energy_final_over_initial",
-        ke.last().unwrap_or(&f64::NAN) / ke0,
-    );
-    // Quarter model: the full rod's KE0 is four times the quarter's.
-    out.set("kinetic_energy_initial_full_rod_j", 4.0 * ke0);
-    // Profile: the particles' radius, height and plastic strain at the end.
-    let mut rows: Vec<Vec<f64>> = (0..p.len())
-        .map(|i| {
-            let x = p.position[i];
-            vec![
-                (x.x * x.x + x.y * x.y).sqrt(),
-                x.z - anvil,
-                sim.state.plastic_strain[i],
-            ]
-        })
-        .collect();
-    rows.sort_by(|a, b| a[0].total_cmp(&b[0]));
-    let (r, z): (Vec<f64>, Vec<f64>) = rows.iter().map(|row| (row[0] * 1e3, row[1] * 1e3)).unzip();
-    out.profile = Profile {
-        columns: ["r", "z", "plastic_strain"].map(String::from).to_vec(),
-        rows,
+        wall_time_s: wall.elapsed().as_secs_f64(),
+        dx,
+        rz: sim
+            .state
+            .particles
+            .position
+            .iter()
+            .map(|x| [x.x, x.y])
+            .collect(),
+        plastic_strain: sim.state.plastic_strain.clone(),
+        times,
+        kinetic: ke,
+        full_rod_factor: 2.0 * std::f64::consts::PI,
     };
-    out.pictures.push(Picture {
-        name: "taylor".into(),
-        title: format!(
-            "Taylor bar: L_f = {:.2} mm (21.5), R_f = {:.2} mm (7.1)",
-            length * 1e3,
-            face_radius * 1e3
-        ),
-        panels: vec![
-            Panel {
-                title: "final shape (all particles, r against z)".into(),
-                labels: ("r (mm)".into(), "z (mm)".into()),
-                points: vec![("particles".into(), r, z)],
-                equal_aspect: true,
-                ..Default::default()
-            },
-            Panel {
-                title: "kinetic energy (quarter rod)".into(),
-                labels: ("t (µs)".into(), "KE (J)".into()),
-                lines: vec![("SPH".into(), times.iter().map(|t| t * 1e6).collect(), ke)],
-                ..Default::default()
-            },
-        ],
-        columns: 2,
-    });
-    Ok(out)
+    Ok(run.outcome())
 }

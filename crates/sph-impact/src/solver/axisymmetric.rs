@@ -1,0 +1,198 @@
+//! Axisymmetric (RZ) geometry: 2-D particles in the (r, z) half-plane (x = r ≥ 0,
+//! y = z) standing for rings about the z axis (paper §6: a sphere hitting a cylinder
+//! head-on is axisymmetric).
+//!
+//! Formulation (the ring-mass form: conservative in axial momentum and total energy).
+//! Each particle's `mass` is its ring mass per radian, m_i = ρ_i A_i r_i (kg/rad),
+//! constant; `density` stays the physical ρ. With η = ρ r (mass per radian per unit area)
+//! the (r, z) parts of the equations are plane 2-D SPH sums over the ring masses:
+//!
+//! ```text
+//! dη/dt = 2-D continuity sum (mass or volume form),   ρ = η / r
+//! dv/dt = Σ_j m_j (r_i σ_i + r_j σ_j)/(η_i η_j) ∇_i W_ij − σ_θθ ŝ_i/η_i e_r
+//! dS/dt = Jaumann rate with L_θθ = v_r / r   (S_θθ is the third diagonal entry)
+//! de/dt = compatible: the pair work and −v̄·(hoop force); or the study's sum
+//!         plus σ_θθ v_r/(ρ r)
+//! ```
+//!
+//! since ρ r dv/dt = ∇₂·(r σ) − σ_θθ e_r exactly (the cylindrical equations of Petschek &
+//! Libersky 1993, JCP 109:76, multiplied by r; the r-weighted pair form keeps the pair
+//! forces equal and opposite between ring masses). So Σ m v_z (per radian) is conserved to
+//! round-off, and with the compatible energy equation so is Σ m (v²/2 + e).
+//!
+//! Next to the axis the pair sums see mirror images (the axis is a reflecting wall: P, ρ, r
+//! and S_rr even, v_r and S_rz odd), which makes their estimate of ∂(r P)/∂r miss part of
+//! P. The hoop force therefore uses ŝ_i, the pair sums' own estimate of ∂r/∂r
+//! (`Rates::hoop_gauge`, → 1 away from the axis), so a uniform stress is in equilibrium
+//! exactly everywhere. Summation density divides Σ m W by the same smoothing of r. The
+//! smoothing length follows the area per particle, h = n_target (m/(ρ r))^(1/2). Totals
+//! (`Simulation::conserved`) are per radian: multiply by 2π for the bodies'. The Monaghan
+//! viscosity and the artificial stress are weighted like the pressure (× r̄/(r_i r_j),
+//! R/r) and have no hoop part.
+
+use crate::solver::config::EnergyForm;
+use crate::solver::derivatives::{Gradients, Rates};
+use serde::{Deserialize, Serialize};
+use sph_core::{Dimension, Particles, Vector};
+
+/// The geometry a 2-D run stands for.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Geometry {
+    /// Plane (plane strain in 2-D), or 1-D/3-D Cartesian.
+    #[default]
+    Cartesian,
+    /// Axisymmetric about the y (z) axis, x = r ≥ 0; 2-D only.
+    Axisymmetric,
+}
+
+/// The radius r = |x| of a position (x = r; mirror ghosts have x < 0).
+#[inline]
+pub(crate) fn radius<V: Vector>(x: V) -> f64 {
+    x.component(0).abs()
+}
+
+/// Area mass m/r = ρ A of a particle of ring mass per radian `m` at radius `r` (what the
+/// smoothing length follows).
+#[inline]
+pub(crate) fn area_mass(m: f64, r: f64) -> f64 {
+    m / r
+}
+
+/// What the hoop terms need of one stage.
+pub(crate) struct HoopInput<'a, D: Dimension> {
+    pub particles: &'a Particles<D>,
+    /// Intact deviatoric stress S (3×3; empty without strength).
+    pub stress: &'a [sph_core::glam::DMat3],
+    /// Damage D (empty without damage).
+    pub damage: &'a [f64],
+    /// Damaged pressure P_D.
+    pub pressure: &'a [f64],
+    /// Shear modulus G.
+    pub shear_modulus: &'a [f64],
+    /// Gradients of the stage (for the stress rate).
+    pub grads: Option<&'a [Gradients<D>]>,
+    pub energy: EnergyForm,
+    /// The kernel-smoothed radius R̂ (the denominators use ρ R̂, finite on the axis).
+    pub smoothed_radius: &'a SmoothedRadius,
+}
+
+/// Adds the hoop terms to the stage's rates (module docs) and turns the pair sums' dη/dt
+/// into dρ/dt = (dη/dt − ρ v_r)/r.
+pub(crate) fn add_hoop_terms<D: Dimension>(input: &HoopInput<'_, D>, rates: &mut [Rates<D>]) {
+    let p = input.particles;
+    for (i, out) in rates.iter_mut().enumerate() {
+        let (r, h) = (radius(p.position[i]), p.smoothing_length[i]);
+        // R̂ stands for r in every denominator: equal to r beyond one support radius from
+        // the axis, and finite on it.
+        let r_hat = input.smoothed_radius.at(r, h);
+        let rho = p.density[i];
+        let v_r = p.velocity[i].component(0);
+        // η = ρ R̂: dρ/dt = (dη/dt − ρ R̂' v_r)/R̂.
+        out.drho = (out.drho - rho * input.smoothed_radius.slope(r, h) * v_r) / r_hat;
+        let d = input.damage.get(i).copied().unwrap_or(0.0);
+        let s_tt = input.stress.get(i).map_or(0.0, |s| s.z_axis.z);
+        let sigma_tt = (1.0 - d) * s_tt - input.pressure[i];
+        // −σ_θθ ŝ/η along r.
+        let mut a = D::Vector::ZERO;
+        a.set_component(0, -sigma_tt * out.hoop_gauge / (rho * r_hat));
+        out.dv += a;
+        if input.energy == EnergyForm::Study {
+            out.de += sigma_tt * v_r / (rho * r_hat);
+        }
+        // The stress rate with the hoop strain rate L_θθ = v_r/r.
+        if !input.stress.is_empty()
+            && input.shear_modulus[i] > 0.0
+            && let Some(gr) = input.grads
+        {
+            let mut l = D::embed(&gr[i].strain_velocity);
+            l.z_axis.z = v_r / r_hat;
+            out.ds = sph_strength::jaumann_rate(&input.stress[i], &l, input.shear_modulus[i]);
+        }
+    }
+}
+
+/// The kernel-smoothed radius R̂(r, h) = ∫ |x'| W(x − x', h) dA' of the (r, z) plane, which
+/// the summation Σ_j m_j W_ij = Σ ρ A r W of a uniform density returns as ρ R̂ instead of
+/// ρ r: R̂ = r where the support does not reach the axis (r ≥ h), larger next to it.
+/// Tabulated once per kernel as R̂ = h f(r/h), f by midpoint quadrature.
+#[derive(Clone, Debug)]
+pub(crate) struct SmoothedRadius {
+    /// f(q) at q = k/(len − 1), k = 0 … len − 1.
+    table: Vec<f64>,
+}
+
+impl SmoothedRadius {
+    /// Tabulates f for the 2-D kernel `w(x, z)` of unit support radius.
+    pub(crate) fn new(w: impl Fn(f64, f64) -> f64) -> Self {
+        let (nq, nu) = (201, 400);
+        let du = 2.0 / nu as f64;
+        let table = (0..nq)
+            .map(|k| {
+                let q = k as f64 / (nq - 1) as f64;
+                let (mut num, mut den) = (0.0, 0.0);
+                for a in 0..nu {
+                    let u = -1.0 + (a as f64 + 0.5) * du;
+                    for b in 0..nu {
+                        let v = -1.0 + (b as f64 + 0.5) * du;
+                        let wk = w(u, v);
+                        num += (q - u).abs() * wk;
+                        den += wk;
+                    }
+                }
+                // Normalised by the discrete ∫W, so f(q) = q exactly for q ≥ 1 up to the
+                // quadrature of a linear function (exact by symmetry).
+                num / den
+            })
+            .collect();
+        Self { table }
+    }
+
+    /// dR̂/dr at (r, h) (1 for r ≥ h).
+    pub(crate) fn slope(&self, r: f64, h: f64) -> f64 {
+        let q = r / h;
+        if q >= 1.0 {
+            return 1.0;
+        }
+        let n = self.table.len() - 1;
+        let k = ((q * n as f64).floor() as usize).min(n - 1);
+        (self.table[k + 1] - self.table[k]) * n as f64
+    }
+
+    /// R̂(r, h).
+    pub(crate) fn at(&self, r: f64, h: f64) -> f64 {
+        let q = r / h;
+        if q >= 1.0 {
+            return r;
+        }
+        let n = self.table.len() - 1;
+        let x = q * n as f64;
+        let k = (x.floor() as usize).min(n - 1);
+        let t = x - k as f64;
+        h * (self.table[k] * (1.0 - t) + self.table[k + 1] * t)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use sph_kernel::{Kernel, WendlandC2};
+
+    #[test]
+    fn smoothed_radius_is_r_away_from_the_axis_and_positive_on_it() {
+        let k = WendlandC2;
+        let s = SmoothedRadius::new(|u, v| k.w(sph_core::glam::DVec2::new(u, v), 1.0));
+        // At q = 1 the support just touches the axis: R̂ = r.
+        assert!(
+            (s.at(0.999_999, 1.0) - 1.0).abs() < 1e-3,
+            "{}",
+            s.at(0.999_999, 1.0)
+        );
+        assert_eq!(s.at(2.0, 1.0), 2.0);
+        // On the axis R̂ is the kernel's mean |x|, positive.
+        let r0 = s.at(0.0, 1.0);
+        assert!(r0 > 0.1 && r0 < 0.5, "{r0}");
+        // Monotone.
+        assert!((0..100).all(|k| s.at(k as f64 / 100.0, 1.0) < s.at((k + 1) as f64 / 100.0, 1.0)));
+    }
+}
