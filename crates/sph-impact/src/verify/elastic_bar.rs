@@ -10,12 +10,11 @@
 //! times, the plateau stress, and KE/KE0 after separation (t = 3L/c_L).
 
 use super::outcome::{Outcome, Profile};
+use super::setup::elastic_solid;
 use super::setup::{last_crossing, median, simulation};
 use crate::{Material, SchemeConfig, Simulation, SolverError};
 use sph_core::{Dim1, ParticleInit, Particles};
-use sph_eos::{LinearElastic, LinearElasticParams};
 use sph_kernel::KernelChoice;
-use sph_strength::{VonMises, VonMisesParams};
 
 const RHO: f64 = 2700.0;
 const E_YOUNG: f64 = 70.0e9;
@@ -48,18 +47,7 @@ pub(crate) fn two_plates(
     let bulk = E_YOUNG / (3.0 * (1.0 - 2.0 * NU));
     let shear = E_YOUNG / (2.0 * (1.0 + NU));
     let c_l = ((bulk + 4.0 / 3.0 * shear) / RHO).sqrt();
-    let bad = |e: String| SolverError::Material(e);
-    let eos = LinearElastic::new(LinearElasticParams {
-        rho0: RHO,
-        K0: bulk,
-    })
-    .map_err(|e| bad(e.to_string()))?;
-    let strength = VonMises::new(VonMisesParams {
-        yield_strength,
-        shear_modulus: shear,
-        hardening: None,
-    })
-    .map_err(|e| bad(e.to_string()))?;
+    let (eos, strength) = elastic_solid(RHO, bulk, shear, yield_strength, None)?;
     let dx = length / n as f64;
     let mut p = Particles::<Dim1>::new();
     for k in 0..n {

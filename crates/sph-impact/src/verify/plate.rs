@@ -15,14 +15,13 @@
 //! latter two at min(n, 10) particles across.
 
 use super::outcome::{Outcome, Panel, Picture, Profile};
+use super::setup::elastic_solid;
 use super::setup::simulation;
 use crate::{Material, SchemeConfig, Simulation, SolverError};
 use sph_core::glam::DVec2;
 use sph_core::{Dim2, ParticleInit, Particles};
-use sph_eos::{LinearElastic, LinearElasticParams};
 use sph_kernel::KernelChoice;
 use sph_riemann::{ArtificialStress, ArtificialStressForm};
-use sph_strength::{VonMises, VonMisesParams};
 
 const RHO: f64 = 1000.0;
 const E_YOUNG: f64 = 2.0e6;
@@ -62,19 +61,8 @@ fn plate(
     vf: f64,
     scheme: SchemeConfig,
 ) -> Result<(Simulation<Dim2, KernelChoice>, Vec<usize>), SolverError> {
-    let bad = |e: String| SolverError::Material(e);
     let (bulk, shear) = moduli();
-    let eos = LinearElastic::new(LinearElasticParams {
-        rho0: RHO,
-        K0: bulk,
-    })
-    .map_err(|e| bad(e.to_string()))?;
-    let strength = VonMises::new(VonMisesParams {
-        yield_strength: 1.0e12,
-        shear_modulus: shear,
-        hardening: None,
-    })
-    .map_err(|e| bad(e.to_string()))?;
+    let (eos, strength) = elastic_solid(RHO, bulk, shear, 1.0e12, None)?;
     let c0 = (bulk / RHO).sqrt();
     let dx = THICKNESS / n as f64;
     let nx_clamp = (CLAMP / dx).round() as usize;

@@ -12,14 +12,13 @@
 //! histories.
 
 use super::outcome::{Outcome, Panel, Picture, Profile};
+use super::setup::elastic_solid;
 use super::setup::simulation;
 use crate::{Material, SchemeConfig, Simulation, SolverError};
 use sph_core::glam::DVec2;
 use sph_core::{Dim2, ParticleInit, Particles};
-use sph_eos::{LinearElastic, LinearElasticParams};
 use sph_kernel::KernelChoice;
 use sph_riemann::{ArtificialStress, ArtificialStressForm};
-use sph_strength::{VonMises, VonMisesParams};
 
 const RHO: f64 = 1010.0;
 const C0: f64 = 852.0;
@@ -30,19 +29,8 @@ const T_END: f64 = 1600.0e-6;
 
 /// Two rings with `n` particles across the wall.
 fn rings(n: usize, scheme: SchemeConfig) -> Result<Simulation<Dim2, KernelChoice>, SolverError> {
-    let bad = |e: String| SolverError::Material(e);
     let bulk = RHO * C0 * C0;
-    let eos = LinearElastic::new(LinearElasticParams {
-        rho0: RHO,
-        K0: bulk,
-    })
-    .map_err(|e| bad(e.to_string()))?;
-    let strength = VonMises::new(VonMisesParams {
-        yield_strength: 1.0e15,
-        shear_modulus: 0.22 * bulk,
-        hardening: None,
-    })
-    .map_err(|e| bad(e.to_string()))?;
+    let (eos, strength) = elastic_solid(RHO, bulk, 0.22 * bulk, 1.0e15, None)?;
     let dx = (R_OUT - R_IN) / n as f64;
     let speed = 0.059 * C0;
     let mut p = Particles::<Dim2>::new();

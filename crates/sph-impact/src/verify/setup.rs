@@ -73,3 +73,25 @@ pub(crate) fn median(mut v: Vec<f64>) -> f64 {
         0.5 * (v[n / 2 - 1] + v[n / 2])
     }
 }
+
+/// A linear elastic solid: EOS P = K(ρ/ρ0 − 1) and von Mises at `yield_strength` (Pa)
+/// with shear modulus G and optional linear hardening H (Pa); a yield far above the
+/// stresses reached makes it purely elastic.
+pub(crate) fn elastic_solid(
+    rho0: f64,
+    bulk: f64,
+    shear: f64,
+    yield_strength: f64,
+    hardening: Option<f64>,
+) -> Result<(sph_eos::LinearElastic, sph_strength::VonMises), SolverError> {
+    let bad = |e: String| SolverError::Material(e);
+    let eos = sph_eos::LinearElastic::new(sph_eos::LinearElasticParams { rho0, K0: bulk })
+        .map_err(|e| bad(e.to_string()))?;
+    let strength = sph_strength::VonMises::new(sph_strength::VonMisesParams {
+        yield_strength,
+        shear_modulus: shear,
+        hardening: hardening.map(|modulus| sph_strength::von_mises::LinearHardening { modulus }),
+    })
+    .map_err(|e| bad(e.to_string()))?;
+    Ok((eos, strength))
+}

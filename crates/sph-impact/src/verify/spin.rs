@@ -5,13 +5,12 @@
 //! G = 26.92 GPa, ρ = 2700, yield far above the stresses), radius 5 cm, rim speed 50 m/s.
 
 use super::outcome::{Outcome, Profile};
+use super::setup::elastic_solid;
 use super::setup::simulation;
 use crate::{Material, SchemeConfig, SolverError};
 use sph_core::glam::DVec2;
 use sph_core::{Dim2, ParticleInit, Particles};
-use sph_eos::{LinearElastic, LinearElasticParams};
 use sph_geometry::{Sphere, cubic_lattice};
-use sph_strength::{VonMises, VonMisesParams};
 
 const RADIUS: f64 = 0.05;
 const RIM_SPEED: f64 = 50.0;
@@ -30,17 +29,7 @@ fn angular_momentum(p: &Particles<Dim2>) -> f64 {
 pub(crate) fn run(n: usize, scheme: SchemeConfig) -> Result<Outcome, SolverError> {
     let bad = |e: String| SolverError::Material(e);
     let (rho, bulk, shear) = (2700.0, 58.33e9, 26.92e9);
-    let eos = LinearElastic::new(LinearElasticParams {
-        rho0: rho,
-        K0: bulk,
-    })
-    .map_err(|e| bad(e.to_string()))?;
-    let strength = VonMises::new(VonMisesParams {
-        yield_strength: 1.0e12,
-        shear_modulus: shear,
-        hardening: None,
-    })
-    .map_err(|e| bad(e.to_string()))?;
+    let (eos, strength) = elastic_solid(rho, bulk, shear, 1.0e12, None)?;
     let dx = RADIUS / n as f64;
     let disc = Sphere::new(DVec2::ZERO, RADIUS).map_err(|e| bad(e.to_string()))?;
     let body = cubic_lattice(&disc, dx, rho).map_err(|e| bad(e.to_string()))?;

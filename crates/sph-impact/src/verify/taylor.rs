@@ -11,13 +11,14 @@
 //! the material edge), the largest plastic strain, and KE(t).
 
 use super::outcome::{Outcome, Panel, Picture, Profile};
+use super::setup::elastic_solid;
 use super::setup::simulation;
 use crate::{Boundary, Material, SchemeConfig, SolverError};
 use sph_core::glam::{DVec2, DVec3};
 use sph_core::{Dim2, Dim3, ParticleInit, Particles};
-use sph_eos::{LinearElastic, LinearElasticParams};
+use sph_eos::LinearElastic;
 use sph_geometry::{Cylinder, cubic_lattice};
-use sph_strength::{VonMises, VonMisesParams, von_mises::LinearHardening};
+use sph_strength::VonMises;
 
 const RHO: f64 = 8930.0;
 const E_YOUNG: f64 = 117.0e9;
@@ -29,21 +30,9 @@ const T_END: f64 = 80.0e-6;
 
 /// The copper of §6a: linear elastic EOS and von Mises with linear hardening.
 fn copper() -> Result<(LinearElastic, VonMises), SolverError> {
-    let bad = |e: String| SolverError::Material(e);
     let bulk = E_YOUNG / (3.0 * (1.0 - 2.0 * NU));
     let shear = E_YOUNG / (2.0 * (1.0 + NU));
-    let eos = LinearElastic::new(LinearElasticParams {
-        rho0: RHO,
-        K0: bulk,
-    })
-    .map_err(|e| bad(e.to_string()))?;
-    let strength = VonMises::new(VonMisesParams {
-        yield_strength: 400.0e6,
-        shear_modulus: shear,
-        hardening: Some(LinearHardening { modulus: 100.0e6 }),
-    })
-    .map_err(|e| bad(e.to_string()))?;
-    Ok((eos, strength))
+    elastic_solid(RHO, bulk, shear, 400.0e6, Some(100.0e6))
 }
 
 /// Runs with `n` lattice spacings across the rod's radius.

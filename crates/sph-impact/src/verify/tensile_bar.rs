@@ -16,12 +16,11 @@
 //! 3/(m+3) = 0.25.
 
 use super::outcome::{Outcome, Profile};
+use super::setup::elastic_solid;
 use super::setup::simulation;
 use crate::{Material, SchemeConfig, SolverError};
 use sph_core::{Dim1, ParticleInit, Particles};
 use sph_damage::{BenzAsphaug, BenzAsphaugParams, DamageVariable, WeibullParams};
-use sph_eos::{LinearElastic, LinearElasticParams};
-use sph_strength::{VonMises, VonMisesParams};
 
 const RHO: f64 = 2700.0;
 const BULK: f64 = 26.7e9;
@@ -34,17 +33,7 @@ const SEED: u64 = 2024;
 /// The peak of one run: (σ_max, ε at the peak, largest D at the end, steps).
 fn peak(n: usize, rate: f64, scheme: &SchemeConfig) -> Result<(f64, f64, f64, u64), SolverError> {
     let bad = |e: String| SolverError::Material(e);
-    let eos = LinearElastic::new(LinearElasticParams {
-        rho0: RHO,
-        K0: BULK,
-    })
-    .map_err(|e| bad(e.to_string()))?;
-    let strength = VonMises::new(VonMisesParams {
-        yield_strength: 1.0e12,
-        shear_modulus: SHEAR,
-        hardening: None,
-    })
-    .map_err(|e| bad(e.to_string()))?;
+    let (eos, strength) = elastic_solid(RHO, BULK, SHEAR, 1.0e12, None)?;
     let dx = LENGTH / n as f64;
     let volume = dx * SIDE * SIDE;
     let params = BenzAsphaugParams::new(WeibullParams::BASALT_BA99, SEED)
