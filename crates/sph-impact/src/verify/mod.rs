@@ -19,6 +19,7 @@ mod spin;
 mod taylor;
 mod tensile_bar;
 
+pub use contact3d::sphere_into_block;
 pub use outcome::{Outcome, Panel, Picture, Profile};
 
 use std::str::FromStr;
