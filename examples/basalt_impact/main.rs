@@ -1,153 +1,285 @@
-//! The bundled basalt-impact example (paper §6, Table 1): a 6 mm aluminium 2024 sphere
-//! into a Ø123.3 × 123.3 mm basalt cylinder.
+//! The bundled basalt-impact example (paper §6): a 6 mm aluminium 2024 sphere into a
+//! Ø123.3 × 123.3 mm basalt cylinder, run end to end and compared with the experiment
+//! (paper Table 2).
 //!
-//! Today it builds the two bodies with the study's variable-resolution Fibonacci
-//! placement and reports what a run would start from — particle counts, masses against
-//! the exact ρ·V, spacings and smoothing lengths. It becomes the full impact run once the
-//! solid-dynamics and RZ solvers land.
+//! By default it runs the 3.9 km/s case in axisymmetric (RZ) geometry from the bundled
+//! scene `examples/scenes/basalt_3.9kms_rz.toml` (the same bodies and settings as the 3-D
+//! `basalt_3.9kms.toml`), at resolution scale 0.5 (A_res = 1 mm instead of the study's
+//! 0.5 mm) to the study's 400 µs: a few minutes on two cores (docs/scenes.md). At the end
+//! it prints crater diameter, bowl diameter, depth and β beside the experiment's values.
 //!
 //! ```text
-//! cargo run --release -p sph-examples --example basalt_impact -- [--speed 3.9] [--a-res 0.5] [--q 1.01]
+//! cargo run --release -p sph-examples --example basalt_impact -- \
+//!     [--speed 3.9] [--resolution-scale F] [--end-time T] [--3d] [--out DIR] [--threads N]
 //! ```
+//!
+//! `--resolution-scale 1` is the study's resolution (A_res = 0.5 mm; about four times the
+//! cost of the default in RZ). `--3d` runs the 3-D scene instead (coarse by default:
+//! resolution scale 0.25 to 40 µs; the study's resolution takes days).
 
 use clap::Parser;
-use sph_core::glam::DVec3;
-use sph_geometry::{BodyParticles, Cylinder, FibonacciPlacement, Shape, Sphere};
+use sph_impact::run::{RunOptions, RunSummary, run};
+use sph_impact::scene::Scene;
+use std::path::{Path, PathBuf};
 use std::process::ExitCode;
-use std::time::Instant;
 
-/// Build the study's impact bodies and report them.
+/// Run the study's Al-sphere-into-basalt impact and compare it with the experiment.
 #[derive(Parser, Debug)]
-#[command(about)]
 struct Args {
-    /// Impact speed in km/s (the study: 2.3, 3.47 or 3.9).
-    #[arg(long, default_value_t = 3.9)]
-    speed: f64,
-    /// Finest particle spacing A_res in mm (the study: 0.5).
-    #[arg(long, default_value_t = 0.5)]
-    a_res: f64,
-    /// Spacing ratio q between the target's layers (the study: 1.01).
-    #[arg(long, default_value_t = 1.01)]
-    q: f64,
-    /// Support radius in spacings (the study: 2.5).
-    #[arg(long, default_value_t = 2.5)]
-    n_target: f64,
+    /// Impact speed in km/s: one of the study's three experiments.
+    #[arg(long, default_value = "3.9", value_parser = ["2.3", "3.47", "3.9"])]
+    speed: String,
+    /// Particle spacings are divided by this (default 0.5 in RZ, 0.25 in 3-D; 1 is the
+    /// study's A_res = 0.5 mm).
+    #[arg(long)]
+    resolution_scale: Option<f64>,
+    /// Simulated end time in seconds (default: the scene's 400 µs in RZ, 40 µs in 3-D).
+    #[arg(long)]
+    end_time: Option<f64>,
+    /// Run the 3-D scene instead of the axisymmetric (RZ) one.
+    #[arg(long = "3d")]
+    three_d: bool,
+    /// Run directory (default out/basalt_impact_<speed>, with `_3d` for a 3-D run).
+    #[arg(long)]
+    out: Option<PathBuf>,
+    /// Worker threads (default: all cores).
+    #[arg(long)]
+    threads: Option<usize>,
 }
 
-/// Table 1 of the study.
-const PROJECTILE_DIAMETER: f64 = 6.0e-3;
-const PROJECTILE_DENSITY: f64 = 2785.0;
-const TARGET_DIAMETER: f64 = 123.3e-3;
-const TARGET_HEIGHT: f64 = 123.3e-3;
-const TARGET_DENSITY: f64 = 2876.0;
+/// One experiment of paper Table 2, with the study's own simulation.
+struct Experiment {
+    speed: &'static str,
+    /// Crater diameter (m), spall zone included.
+    diameter: f64,
+    /// Crater depth (m).
+    depth: f64,
+    /// Momentum-transfer factor.
+    beta: f64,
+    /// The study's simulation: diameter (m), depth (m), β.
+    study: (f64, f64, f64),
+}
 
-fn report(name: &str, body: &BodyParticles<DVec3>, exact_mass: f64, n_target: f64, seconds: f64) {
-    let h = body.smoothing_lengths(n_target).unwrap_or_default();
-    let (h_min, h_max) = h
-        .iter()
-        .fold((f64::INFINITY, 0.0f64), |(a, b), &x| (a.min(x), b.max(x)));
-    println!("{name}");
-    println!("  particles                {:>12}", body.len());
+/// Paper Table 2.
+const TABLE_2: [Experiment; 3] = [
+    Experiment {
+        speed: "2.3",
+        diameter: 42e-3,
+        depth: 10e-3,
+        beta: 1.96,
+        study: (35e-3, 10e-3, 1.57),
+    },
+    Experiment {
+        speed: "3.47",
+        diameter: 52e-3,
+        depth: 12e-3,
+        beta: 2.39,
+        study: (43e-3, 14e-3, 2.02),
+    },
+    Experiment {
+        speed: "3.9",
+        diameter: 55e-3,
+        depth: 13.5e-3,
+        beta: 2.51,
+        study: (48e-3, 15e-3, 2.19),
+    },
+];
+
+/// The bundled scene file of a speed.
+fn scene_path(speed: &str, three_d: bool) -> PathBuf {
+    let suffix = if three_d { "" } else { "_rz" };
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("scenes")
+        .join(format!("basalt_{speed}kms{suffix}.toml"))
+}
+
+/// A time in µs, to the precision it needs.
+fn micro(t: f64) -> String {
+    let us = t * 1e6;
+    if us >= 10.0 {
+        format!("{us:.0} µs")
+    } else {
+        format!("{us:.3} µs")
+    }
+}
+
+/// "+12.3 %" for x against the reference.
+fn relative(x: f64, reference: f64) -> String {
+    if x.is_finite() {
+        format!("{:+.1} %", 100.0 * (x / reference - 1.0))
+    } else {
+        "—".into()
+    }
+}
+
+/// The comparison with Table 2.
+fn print_comparison(s: &RunSummary, e: &Experiment) {
     println!(
-        "  share of uniform lattice {:>11.2} %  (lattice at the finest spacing: {:.0})",
-        100.0 * body.lattice_share(),
-        body.lattice_equivalent_count
+        "\nresult at t = {} against paper Table 2 ({} km/s):",
+        micro(s.end_time_s),
+        e.speed
     );
     println!(
-        "  mass                     {:>12.6e} kg (exact ρ·V {:.6e} kg)",
-        body.total_mass(),
-        exact_mass
+        "  {:<22} {:>10} {:>11} {:>10} {:>14}",
+        "", "this run", "experiment", "error", "study's sim"
     );
-    if let Some(e) = body.raw_mass_error {
-        println!(
-            "  raw mass error           {:>+11.2e}   (before the final rescale to ρ·V)",
-            e
-        );
+    let mm = |x: f64| format!("{:.1} mm", x * 1e3);
+    let rows = [
+        (
+            "crater diameter",
+            mm(s.crater_diameter_m),
+            mm(e.diameter),
+            relative(s.crater_diameter_m, e.diameter),
+            mm(e.study.0),
+        ),
+        (
+            "bowl diameter",
+            mm(s.bowl_diameter_m),
+            "—".into(),
+            "—".into(),
+            "—".into(),
+        ),
+        (
+            "crater depth",
+            mm(s.crater_depth_m),
+            mm(e.depth),
+            relative(s.crater_depth_m, e.depth),
+            mm(e.study.1),
+        ),
+        (
+            "β (from the ejecta)",
+            format!("{:.3}", s.beta),
+            format!("{:.2}", e.beta),
+            relative(s.beta, e.beta),
+            format!("{:.2}", e.study.2),
+        ),
+    ];
+    for (name, run, exp, err, study) in rows {
+        println!("  {name:<22} {run:>10} {exp:>11} {err:>10} {study:>14}");
     }
     println!(
-        "  spacing                  {:.3} … {:.3} mm",
-        1e3 * body.min_spacing(),
-        1e3 * body.max_spacing()
+        "  (β from the target's momentum {:.3}; ejecta {:.3e} kg; energy change {:.1e})",
+        s.beta_target, s.ejecta_mass_kg, s.energy_error
     );
-    println!(
-        "  support radius h         {:.3} … {:.3} mm",
-        1e3 * h_min,
-        1e3 * h_max
-    );
-    println!("  placement time           {seconds:.2} s");
 }
 
 fn main() -> ExitCode {
     let args = Args::parse();
-    let a_res = args.a_res * 1e-3;
-    let pr = 0.5 * PROJECTILE_DIAMETER;
-    // Target: top face at z = 0, body below; the impact point is the top centre.
-    let target_shape = match Cylinder::new(
-        DVec3::new(0.0, 0.0, -TARGET_HEIGHT),
-        DVec3::Z,
-        0.5 * TARGET_DIAMETER,
-        TARGET_HEIGHT,
-    ) {
-        Ok(c) => c,
-        Err(e) => {
-            eprintln!("error: target: {e}");
-            return ExitCode::FAILURE;
-        }
-    };
-    // Projectile: touching the target one spacing above its surface, moving down.
-    let centre = DVec3::new(0.0, 0.0, pr + a_res);
-    let projectile_shape = match Sphere::new(centre, pr) {
+    let experiment = TABLE_2
+        .iter()
+        .find(|e| e.speed == args.speed)
+        .expect("clap accepts only the three speeds");
+    let path = scene_path(&args.speed, args.three_d);
+    let scene = match Scene::from_toml_file(&path) {
         Ok(s) => s,
         Err(e) => {
-            eprintln!("error: projectile: {e}");
-            return ExitCode::FAILURE;
+            eprintln!("error: {e}");
+            return ExitCode::from(2);
         }
     };
+    let (default_scale, default_end) = if args.three_d {
+        (0.25, 40e-6)
+    } else {
+        (0.5, scene.end_time)
+    };
+    let scale = args.resolution_scale.unwrap_or(default_scale);
+    let end_time = args.end_time.unwrap_or(default_end);
+    let out = args.out.clone().unwrap_or_else(|| {
+        let suffix = if args.three_d { "_3d" } else { "" };
+        PathBuf::from(format!("out/basalt_impact_{}{suffix}", args.speed))
+    });
+    let threads = args.threads.unwrap_or_else(|| {
+        std::thread::available_parallelism().map_or(1, std::num::NonZeroUsize::get)
+    });
+
     println!(
         "Basalt impact (paper §6): Al 2024 sphere Ø6 mm at {} km/s into basalt Ø123.3 × 123.3 mm",
         args.speed
     );
+    println!("scene             {}", path.display());
     println!(
-        "A_res = {} mm, target q = {}, projectile q = 1.00, n_target = {}\n",
-        args.a_res, args.q, args.n_target
-    );
-
-    let t0 = Instant::now();
-    let projectile = FibonacciPlacement::new(centre, a_res, 1.0, PROJECTILE_DENSITY)
-        .and_then(|p| p.place(&projectile_shape));
-    let t1 = Instant::now();
-    let target = FibonacciPlacement::new(DVec3::ZERO, a_res, args.q, TARGET_DENSITY)
-        .and_then(|p| p.place(&target_shape));
-    let t2 = Instant::now();
-    let (projectile, target) = match (projectile, target) {
-        (Ok(p), Ok(t)) => (p, t),
-        (Err(e), _) | (_, Err(e)) => {
-            eprintln!("error: {e}");
-            return ExitCode::FAILURE;
+        "geometry          {}",
+        if args.three_d {
+            "3-D"
+        } else {
+            "axisymmetric (RZ): particles are rings about the impact axis"
         }
-    };
-    let vol = |s: &dyn Shape<DVec3>| s.volume().unwrap_or(f64::NAN);
-    let m_p = PROJECTILE_DENSITY * vol(&projectile_shape);
-    report(
-        "projectile (aluminium 2024, ρ 2785 kg/m³)",
-        &projectile,
-        m_p,
-        args.n_target,
-        (t1 - t0).as_secs_f64(),
     );
-    report(
-        "target (basalt, ρ 2876 kg/m³)",
-        &target,
-        TARGET_DENSITY * vol(&target_shape),
-        args.n_target,
-        (t2 - t1).as_secs_f64(),
-    );
-    let v = args.speed * 1e3;
+    let a_res = scene
+        .bodies
+        .iter()
+        .map(|b| b.placement.finest_spacing())
+        .fold(f64::INFINITY, f64::min);
     println!(
-        "\nimpactor momentum m·v = {:.4} kg·m/s, kinetic energy ½m·v² = {:.1} J",
-        m_p * v,
-        0.5 * m_p * v * v
+        "resolution scale  {scale}{} → finest spacing {:.3} mm (the study: 0.5 mm)",
+        if args.resolution_scale.is_none() {
+            " (default)"
+        } else {
+            ""
+        },
+        a_res / scale * 1e3
     );
-    println!("total particles {}", projectile.len() + target.len());
-    ExitCode::SUCCESS
+    println!(
+        "end time          {}{} (the study: 400 µs)",
+        micro(end_time),
+        if args.end_time.is_none() {
+            " (default)"
+        } else {
+            ""
+        }
+    );
+    let s = scene.scheme();
+    println!(
+        "scheme            {:?}, n_target {}, CFL {}, artificial stress ε = {}",
+        s.kernel, s.n_target, s.cfl, s.artificial_stress.epsilon
+    );
+    match scene.check_report(scale, threads, Some(end_time)) {
+        Ok(r) => println!(
+            "particles         {} ({}); estimated ≥ {:.0} steps, roughly {:.1} min on {} thread(s)",
+            r.particles,
+            r.bodies
+                .iter()
+                .map(|b| format!("{} {}", b.name, b.particles))
+                .collect::<Vec<_>>()
+                .join(", "),
+            r.steps,
+            r.runtime_s / 60.0,
+            threads
+        ),
+        Err(e) => {
+            eprintln!("error: {e}");
+            return ExitCode::from(2);
+        }
+    }
+    println!("run directory     {}\n", out.display());
+
+    let options = RunOptions {
+        threads: Some(threads),
+        end_time: Some(end_time),
+        resolution_scale: scale,
+        quiet: false,
+    };
+    match run(&scene, &out, &options) {
+        Ok(summary) => {
+            print_comparison(&summary, experiment);
+            println!(
+                "\ncost: {} particles, {} steps, {:.0} s wall, {:.3e} particle-steps/s on {} thread(s)",
+                summary.particles,
+                summary.steps,
+                summary.wall_time_s,
+                summary.particle_steps_per_s,
+                summary.threads
+            );
+            if end_time < 400e-6 {
+                println!(
+                    "(the crater and β still grow before 400 µs: compare at the study's end time)"
+                );
+            }
+            ExitCode::SUCCESS
+        }
+        Err(e) => {
+            eprintln!("error: {e}");
+            ExitCode::from(if e.is_bad_input() { 2 } else { 1 })
+        }
+    }
 }

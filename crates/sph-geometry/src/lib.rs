@@ -36,6 +36,8 @@
 //!   builders.
 //! * [`lattice`] — cubic (1-, 2-, 3-D), hexagonal (2-D) and HCP (3-D) lattices.
 //! * [`fibonacci`] — the variable-resolution placement ([`FibonacciPlacement`]).
+//! * [`rz`] — placement in the meridional half-plane for axisymmetric (RZ) runs
+//!   ([`rz_lattice`], [`RzLayeredPlacement`]; masses per radian).
 //! * [`placement`] — the common result [`BodyParticles`].
 //! * [`quality`] — [`closest_approach`], the closest pair relative to the local spacing.
 //! * [`error`] — [`GeometryError`].
@@ -55,6 +57,7 @@ pub mod half_space;
 pub mod lattice;
 pub mod placement;
 pub mod quality;
+pub mod rz;
 pub mod shape;
 pub mod sphere;
 
@@ -67,5 +70,6 @@ pub use half_space::HalfSpace;
 pub use lattice::{cubic_lattice, hcp_lattice, hexagonal_lattice};
 pub use placement::BodyParticles;
 pub use quality::{CloseApproach, closest_approach};
+pub use rz::{RzLayeredPlacement, rz_lattice, rz_layer_point_count};
 pub use shape::{Aabb, Shape, estimate_volume, unit_ball_volume};
 pub use sphere::Sphere;

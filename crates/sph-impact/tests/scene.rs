@@ -1,12 +1,12 @@
 //! Scenes: every bad-scene case gives a one-line error naming the problem, the key and
 //! the line; the bundled scenes round-trip through the parser; `check` on the study's
-//! 3.9 km/s scene; the smoke scene runs end to end.
+//! 3.9 km/s scene (3-D and RZ); the smoke scenes (3-D and RZ) run end to end.
 //!
 //! `cargo test -p sph-impact --test scene -- --nocapture` prints the messages and the
 //! check report.
 
 use sph_impact::run::{RunOptions, run};
-use sph_impact::scene::{Scene, SceneErrorKind};
+use sph_impact::scene::{GeometryKind, Scene, SceneErrorKind};
 use std::path::{Path, PathBuf};
 
 /// A valid two-body scene; tests replace one line of it.
@@ -222,10 +222,11 @@ fn other_bad_values() {
         m.contains("body \"projectile\": `placement.spacing`"),
         "{m}"
     );
+    // A cuboid target in an RZ scene.
     let m = message(&format!("geometry = \"rz\"\n{BASE}"));
     assert!(
         m.starts_with(
-            "scene.toml:1:12: `geometry`: axisymmetric (RZ) geometry is not implemented yet"
+            "scene.toml:15:18: body \"target\": `shape.kind`: not axisymmetric about the z axis"
         ),
         "{m}"
     );
@@ -242,6 +243,10 @@ fn bundled_scenes_round_trip() {
         "basalt_3.47kms.toml",
         "basalt_2.3kms.toml",
         "smoke.toml",
+        "basalt_3.9kms_rz.toml",
+        "basalt_3.47kms_rz.toml",
+        "basalt_2.3kms_rz.toml",
+        "smoke_rz.toml",
     ] {
         let path = scene_file(name);
         let scene = Scene::from_toml_file(&path).unwrap();
@@ -257,8 +262,17 @@ fn bundled_scenes_round_trip() {
             assert!((setup.impact_speed - u * 1e3).abs() < 1e-9);
             let s = scene.scheme();
             assert_eq!((s.n_target, s.cfl), (2.5, 0.25));
-            assert_eq!(s.artificial_stress.epsilon, 0.2);
             assert_eq!(s.artificial_stress.exponent, 4);
+            if let Some(three_d) = name.strip_suffix("_rz.toml") {
+                // The same bodies as the 3-D scene; no artificial stress (docs/scenes.md).
+                let other = Scene::from_toml_file(scene_file(&format!("{three_d}.toml"))).unwrap();
+                assert_eq!(scene.bodies, other.bodies, "{name}");
+                assert_eq!(scene.geometry, GeometryKind::Rz);
+                assert_eq!(s.geometry, sph_impact::Geometry::Axisymmetric);
+                assert_eq!(s.artificial_stress.epsilon, 0.0);
+            } else {
+                assert_eq!(s.artificial_stress.epsilon, 0.2);
+            }
             let m = scene.materials().unwrap();
             assert_eq!(
                 (m[0].name.as_str(), m[1].name.as_str()),
@@ -395,4 +409,179 @@ fn command_line_exit_codes() {
     let list: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
     assert_eq!(list[0]["name"], "basalt-study");
     assert_eq!(list[0]["parameters"]["eos"]["model"], "tillotson");
+}
+
+/// A valid axisymmetric (RZ) two-body scene; tests replace one line of it.
+const RZ_BASE: &str = r#"geometry = "rz"
+end_time = 0.2e-6
+seed = 3
+
+[[body]]
+name = "projectile"
+material = "aluminium-2024-jc"
+shape = { kind = "sphere", centre = [0.0, 0.0, 2.0e-3], radius = 1.5e-3 }
+placement = { kind = "variable", origin = [0.0, 0.0, 2.0e-3], a_res = 0.25e-3, q = 1.0 }
+velocity = [0.0, 0.0, -3900.0]
+
+[[body]]
+name = "target"
+material = "basalt-study"
+shape = { kind = "cylinder", base = [0.0, 0.0, -4.0e-3], axis = [0.0, 0.0, 1.0], radius = 4.0e-3, length = 4.0e-3 }
+placement = { kind = "variable", origin = [0.0, 0.0, 0.0], a_res = 0.25e-3, q = 1.02 }
+"#;
+
+/// `RZ_BASE` with `from` replaced by `to` (which must occur), read: its one-line error.
+fn rz_message(from: &str, to: &str) -> String {
+    assert!(RZ_BASE.contains(from), "{from}");
+    message(&RZ_BASE.replacen(from, to, 1))
+}
+
+#[test]
+fn rz_scene_builds() {
+    let scene = Scene::from_toml_str(RZ_BASE, "scene.toml").unwrap();
+    assert_eq!(scene.geometry, GeometryKind::Rz);
+    let built = scene.build().unwrap();
+    assert_eq!(built.simulation.geometry(), GeometryKind::Rz);
+    let sim = built.simulation.rz().expect("an RZ simulation");
+    assert_eq!(sim.scheme.geometry, sph_impact::Geometry::Axisymmetric);
+    let p = &sim.state.particles;
+    assert!(p.position.iter().all(|x| x.x > 0.0));
+    // Rings at rest but the projectile's, moving along the axis.
+    let proj = &built.bodies[0];
+    assert!(
+        p.velocity[proj.range.clone()]
+            .iter()
+            .all(|v| v.x == 0.0 && v.y == -3900.0)
+    );
+    // Masses per radian: 2π Σ m is each body's mass, within the placement's error of ρV.
+    for b in &built.bodies {
+        let per_radian: f64 = p.mass[b.range.clone()].iter().sum();
+        assert!((std::f64::consts::TAU * per_radian / b.mass - 1.0).abs() < 1e-12);
+        assert!(
+            b.mass_error().unwrap().abs() < 0.01,
+            "{}: {:?}",
+            b.name,
+            b.mass_error()
+        );
+    }
+    let report = scene.check_report(1.0, 2, None).unwrap();
+    println!("{}", report.to_text());
+    assert_eq!(report.geometry, GeometryKind::Rz);
+    assert_eq!(report.particles, p.len());
+}
+
+#[test]
+fn rz_shapes_must_be_axisymmetric() {
+    let cases = [
+        (
+            "centre = [0.0, 0.0, 2.0e-3]",
+            "centre = [0.5e-3, 0.0, 2.0e-3]",
+            "scene.toml:8:37: body \"projectile\": `shape.centre`: not axisymmetric about the z axis",
+        ),
+        (
+            "base = [0.0, 0.0, -4.0e-3]",
+            "base = [0.0, 1.0e-3, -4.0e-3]",
+            "scene.toml:15:37: body \"target\": `shape.base`:",
+        ),
+        (
+            "axis = [0.0, 0.0, 1.0]",
+            "axis = [1.0, 0.0, 0.0]",
+            "scene.toml:15:65: body \"target\": `shape.axis`: not axisymmetric about the z axis, as geometry = \"rz\" needs: the cylinder's axis must be the z axis",
+        ),
+        (
+            "velocity = [0.0, 0.0, -3900.0]",
+            "velocity = [100.0, 0.0, -3900.0]",
+            "scene.toml:10:12: body \"projectile\": `velocity`:",
+        ),
+        (
+            "origin = [0.0, 0.0, 2.0e-3]",
+            "origin = [1.0e-3, 0.0, 2.0e-3]",
+            "scene.toml:9:43: body \"projectile\": `placement.origin`:",
+        ),
+    ];
+    for (from, to, start) in cases {
+        let m = rz_message(from, to);
+        assert!(m.starts_with(start), "{m}");
+    }
+    // A cuboid has no axis of revolution.
+    let m = rz_message(
+        "shape = { kind = \"cylinder\", base = [0.0, 0.0, -4.0e-3], axis = [0.0, 0.0, 1.0], radius = 4.0e-3, length = 4.0e-3 }",
+        "shape = { kind = \"cuboid\", min = [-4.0e-3, -4.0e-3, -4.0e-3], max = [4.0e-3, 4.0e-3, 0.0] }",
+    );
+    assert!(
+        m.starts_with("scene.toml:15:18: body \"target\": `shape.kind`: not axisymmetric"),
+        "{m}"
+    );
+    assert!(m.contains("spheres and cylinders"), "{m}");
+}
+
+#[test]
+fn rz_smoke_scene_runs_end_to_end() {
+    let scene = Scene::from_toml_file(scene_file("smoke_rz.toml")).unwrap();
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("scene-smoke-rz");
+    let _ = std::fs::remove_dir_all(&dir);
+    let options = RunOptions {
+        quiet: true,
+        end_time: Some(0.5e-6),
+        ..RunOptions::default()
+    };
+    let summary = run(&scene, &dir, &options).unwrap();
+    for f in [
+        "summary.json",
+        "history.csv",
+        "run.pvd",
+        "snapshots/00000.vtu",
+        "snapshots/00002.vtu",
+        "crater_section.png",
+        "history.png",
+        "ejecta.png",
+        "projectile_energy.png",
+    ] {
+        assert!(dir.join(f).is_file(), "{f} missing");
+    }
+    let json: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap()).unwrap();
+    assert_eq!(json["geometry"], "rz");
+    assert_eq!(json["scheme"]["geometry"], "axisymmetric");
+    // Totals are the whole bodies': the projectile's mass and momentum, not per radian.
+    let m_p = summary.projectile_mass_kg;
+    assert!(
+        (m_p / (2785.0 * 4.0 / 3.0 * std::f64::consts::PI * 1.5e-3f64.powi(3)) - 1.0).abs() < 0.03
+    );
+    assert!((summary.initial.momentum[2] / (-m_p * 3900.0) - 1.0).abs() < 1e-12);
+    assert!((summary.last.momentum[2] / summary.initial.momentum[2] - 1.0).abs() < 1e-9);
+    assert!(
+        (summary.beta - summary.beta_target).abs() < 1e-9,
+        "{summary:?}"
+    );
+    assert!(summary.beta >= 1.0);
+    assert!(
+        summary.energy_error.abs() < 1e-6,
+        "{}",
+        summary.energy_error
+    );
+    let vtu = std::fs::read_to_string(dir.join("snapshots/00002.vtu")).unwrap();
+    assert!(vtu.contains("Name=\"deviatoric_stress\""));
+    println!(
+        "smoke (rz): {} rings, {} steps, β {:.4}, crater Ø {:.2} mm, depth {:.2} mm, {:.2} s",
+        summary.particles,
+        summary.steps,
+        summary.beta,
+        summary.crater_diameter_m * 1e3,
+        summary.crater_depth_m * 1e3,
+        summary.wall_time_s
+    );
+}
+
+#[test]
+fn check_the_study_scene_in_rz() {
+    let scene = Scene::from_toml_file(scene_file("basalt_3.9kms_rz.toml")).unwrap();
+    let report = scene.check_report(1.0, 2, None).unwrap();
+    println!("{}", report.to_text());
+    // docs/placement.md §6: 56 projectile and 6 362 target rings.
+    assert_eq!(report.bodies[0].particles, 56);
+    assert_eq!(report.bodies[1].particles, 6362);
+    assert!(report.bodies[0].mass_error.unwrap().abs() < 1e-12);
+    assert!(report.bodies[1].mass_error.unwrap().abs() < 1e-3);
+    assert!((report.first_dt_s / (0.25 * 0.5e-3 / (6300.0 + 3900.0)) - 1.0).abs() < 1e-3);
 }

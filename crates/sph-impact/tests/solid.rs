@@ -321,3 +321,65 @@ fn taylor_bar_final_length_within_five_percent() {
     );
     assert!(l.abs() < 0.05);
 }
+
+/// RZ (axisymmetric.rs): a rod at rest carrying only a hoop stress σ_θθ = −σ0 (σ_rr =
+/// σ_zz = σ_rz = 0) is pushed outward by exactly a_r = σ0/(ρ r) — the hoop term alone —
+/// everywhere beyond the axis zone, including the particles on the free outer surface.
+/// (The pair sums' gauge ∂r/∂r used for the hoop force next to the axis grows like r/h at
+/// a free surface; applied there it multiplied this force several times over and made the
+/// edge of a Taylor bar's foot jet at kilometres per second.)
+#[test]
+fn rz_hoop_stress_pushes_a_free_rod_outward_at_sigma_over_rho_r() {
+    let (eos, strength) = elastic();
+    let (n, dx, sigma0) = (16, 1.0e-3, 1.0e8);
+    // σ = S − P I with P = σ0/3: S = diag(σ0/3, σ0/3, −2σ0/3) in (r, z, θ).
+    let p0 = sigma0 / 3.0;
+    let rho = RHO * (1.0 + p0 / BULK);
+    let mut p = Particles::<Dim2>::new();
+    for a in 0..n {
+        for b in 0..n {
+            let x = DVec2::new((a as f64 + 0.5) * dx, (b as f64 + 0.5) * dx);
+            p.push(ParticleInit {
+                position: x,
+                velocity: DVec2::ZERO,
+                mass: rho * dx * dx * x.x,
+                density: rho,
+                specific_energy: 0.0,
+                smoothing_length: 2.5 * dx,
+                material: 0,
+            });
+        }
+    }
+    let scheme = SchemeConfig {
+        geometry: sph_impact::Geometry::Axisymmetric,
+        ..Default::default()
+    };
+    let mut sim = Simulation::new(
+        p,
+        vec![Material::solid("aluminium", eos, strength)],
+        scheme,
+        WendlandC2,
+        Vec::new(),
+        None,
+    )
+    .unwrap();
+    let s = sph_core::glam::DMat3::from_diagonal(sph_core::glam::DVec3::new(p0, p0, -2.0 * p0));
+    sim.state.stress.iter_mut().for_each(|x| *x = s);
+    let dt = 1e-10;
+    sim.step(dt).unwrap();
+    let q = &sim.state.particles;
+    let (mut worst, mut worst_surface) = (0.0f64, 0.0f64);
+    for i in 0..q.len() {
+        let r = q.position[i].x;
+        // Beyond the axis zone (three support radii).
+        if r > 3.0 * 2.5 * dx {
+            let ratio = q.velocity[i].x / dt * rho * r / sigma0;
+            worst = worst.max((ratio - 1.0).abs());
+            if r > (n as f64 - 1.0) * dx {
+                worst_surface = worst_surface.max((ratio - 1.0).abs());
+            }
+        }
+    }
+    println!("a_r ρ r/σ0 − 1: worst {worst:.3e}, on the outer surface {worst_surface:.3e}");
+    assert!(worst < 0.05, "{worst}");
+}

@@ -413,17 +413,27 @@ fn rz_uniform_pressure_is_in_equilibrium_next_to_the_axis() {
     )
     .unwrap();
     sim.step(1e-4).unwrap();
-    // Particles away from the free surfaces (r < 0.5, 0.5 < z < 1.5) feel no force.
+    // Particles away from the free surfaces (r < 0.5, 0.5 < z < 1.5) feel no force:
+    // exactly within two support radii of the axis, where the hoop force uses the pair
+    // sums' own ∂r/∂r; beyond, where it uses the exact 1, to the lattice's first-moment
+    // error (a free surface's pressure release here would be ~2e-4 m/s).
     let s = &sim.state.particles;
-    let mut worst: f64 = 0.0;
+    let h = 2.5 * dx;
+    let (mut near, mut beyond): (f64, f64) = (0.0, 0.0);
     for i in 0..s.len() {
         let x = s.position[i];
         if x.x < 0.5 && x.y > 0.5 && x.y < 1.5 {
-            worst = worst.max(s.velocity[i].length());
+            let v = s.velocity[i].length();
+            if x.x < 2.0 * h {
+                near = near.max(v);
+            } else {
+                beyond = beyond.max(v);
+            }
         }
     }
-    println!("largest speed after one step near the axis: {worst:e}");
-    assert!(worst < 1e-10, "{worst}");
+    println!("largest speed after one step: within 2h of the axis {near:e}, beyond {beyond:e}");
+    assert!(near < 1e-10, "{near}");
+    assert!(beyond < 1e-6, "{beyond}");
 }
 
 /// Spherical Noh in RZ (verification.md, RZ section): at 20 spacings per radius at least

@@ -1,8 +1,9 @@
 //! The solver's particle arrays in the `[f64; 3]` form the diagnostics and the VTU writer
-//! read, copied once per measurement.
+//! read, copied once per measurement: in RZ the rings as points (r, 0, z) with velocity
+//! (v_r, 0, v_z) and their whole mass, 2π × mass per radian (docs/diagnostics.md §1).
 
 use crate::Simulation;
-use sph_core::Dim3;
+use crate::scene::SceneDimension;
 use sph_diagnostics::ParticleView;
 use sph_kernel::KernelChoice;
 
@@ -19,12 +20,12 @@ pub(crate) struct Arrays {
 
 impl Arrays {
     /// Copies the current state of `sim`.
-    pub fn of(sim: &Simulation<Dim3, KernelChoice>) -> Self {
+    pub fn of<D: SceneDimension>(sim: &Simulation<D, KernelChoice>) -> Self {
         let p = &sim.state.particles;
         Self {
-            position: p.position.iter().map(|x| x.to_array()).collect(),
-            velocity: p.velocity.iter().map(|v| v.to_array()).collect(),
-            mass: p.mass.clone(),
+            position: p.position.iter().map(|&x| D::to_scene(x)).collect(),
+            velocity: p.velocity.iter().map(|&v| D::to_scene(v)).collect(),
+            mass: p.mass.iter().map(|m| D::BODY_FACTOR * m).collect(),
             body: p.material.clone(),
             damage: sim.damage(),
             density: p.density.clone(),

@@ -42,11 +42,11 @@ pub struct HistoryRow {
     pub crater_depth: f64,
     /// Crater diameter (m), from the last snapshot.
     pub crater_diameter: f64,
-    /// Σ ½ m v² (J).
+    /// Σ ½ m v² of the whole bodies (J; 2π × the solver's per-radian sum in RZ).
     pub kinetic: f64,
-    /// Σ m e (J).
+    /// Σ m e of the whole bodies (J).
     pub internal: f64,
-    /// Σ m v_z (kg·m/s).
+    /// Σ m v_z of the whole bodies (kg·m/s).
     pub momentum_z: f64,
     /// True on rows where the crater was measured (snapshots), false where the row
     /// carries the last measured value.

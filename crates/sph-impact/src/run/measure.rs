@@ -2,7 +2,7 @@
 //! ejecta and from the target, the crater.
 
 use crate::run::arrays::Arrays;
-use crate::scene::DiagnosticSetup;
+use crate::scene::{DiagnosticSetup, GeometryKind};
 use serde::Serialize;
 use sph_diagnostics::{
     Crater, CraterOptions, EjectaCriterion, Geometry, ProjectileDebris, beta_from_ejecta,
@@ -18,6 +18,8 @@ pub(crate) struct Measurer {
     pub projectile_mass: f64,
     /// Initial axial momentum of everything but the projectile (kg·m/s).
     pub initial_target_momentum_z: f64,
+    /// 3-D or RZ (how the distance from the axis is measured).
+    pub geometry: GeometryKind,
     /// Height of the surface above the top particle layer (m), from t = 0
     /// ([`Measurer::calibrate`]).
     pub top_offset: f64,
@@ -75,7 +77,11 @@ impl Measurer {
     /// The crater options: the setup's bin, one bin as the depth threshold, the
     /// measured offset of the top layer.
     pub fn crater_options(&self) -> CraterOptions {
-        let mut o = CraterOptions::new(Geometry::ThreeD, self.setup.crater_bin);
+        let geometry = match self.geometry {
+            GeometryKind::ThreeD => Geometry::ThreeD,
+            GeometryKind::Rz => Geometry::Axisymmetric,
+        };
+        let mut o = CraterOptions::new(geometry, self.setup.crater_bin);
         o.top_offset = self.top_offset;
         o
     }

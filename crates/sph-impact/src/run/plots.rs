@@ -5,6 +5,7 @@
 use crate::run::arrays::Arrays;
 use crate::run::error::RunError;
 use crate::run::history::HistoryRow;
+use crate::scene::GeometryKind;
 use sph_diagnostics::plot::{
     BLACK, BLUE, ColorScale, Colormap, Figure, GREY, Marker, ORANGE, PlotError, RED, Style,
 };
@@ -22,13 +23,14 @@ fn plot_err(path: &Path) -> impl Fn(PlotError) -> RunError + '_ {
     move |e| RunError::io(path, e)
 }
 
-/// x against z of the particles in the slab |y| < their own spacing, coloured by damage;
-/// the projectile's particles are ringed.
+/// x against z of the particles in the slab |y| < their own spacing (in RZ: r against z
+/// of every ring), coloured by damage; the projectile's particles are ringed.
 pub(crate) fn cross_section(
     a: &Arrays,
     spacing: &[f64],
     surface_z: f64,
     projectile: u16,
+    geometry: GeometryKind,
     path: &Path,
 ) -> Result<(), RunError> {
     let e = plot_err(path);
@@ -39,9 +41,16 @@ pub(crate) fn cross_section(
     let z: Vec<f64> = sel.iter().map(|&i| a.position[i][2] * 1e3).collect();
     let d: Vec<f64> = sel.iter().map(|&i| a.damage[i]).collect();
     let mut fig = Figure::new(1200, 900);
-    fig.title("Cross-section |y| < particle spacing, coloured by damage D");
+    let rz = geometry == GeometryKind::Rz;
+    fig.title(if rz {
+        "RZ half-plane (every ring), coloured by damage D"
+    } else {
+        "Cross-section |y| < particle spacing, coloured by damage D"
+    });
     let ax = fig.axes();
-    ax.xlabel("x (mm)").ylabel("z (mm)").equal_aspect(true);
+    ax.xlabel(if rz { "r (mm)" } else { "x (mm)" })
+        .ylabel("z (mm)")
+        .equal_aspect(true);
     let scale = ColorScale {
         map: Colormap::Viridis,
         range: Some((0.0, 1.0)),

@@ -4,15 +4,18 @@
 use crate::Simulation;
 use crate::run::arrays::Arrays;
 use crate::run::error::RunError;
-use sph_core::Dim3;
+use crate::scene::SceneDimension;
 use sph_diagnostics::{Pvd, VtuWriter};
 use sph_kernel::KernelChoice;
 use std::path::Path;
 
 /// Writes snapshot number `index` of `sim` into `dir/snapshots/` and rewrites
-/// `dir/run.pvd` with it added (so an interrupted run can still be opened).
-pub(crate) fn write_snapshot(
-    sim: &Simulation<Dim3, KernelChoice>,
+/// `dir/run.pvd` with it added (so an interrupted run can still be opened). Points,
+/// vectors and the stress tensor are in the scene's frame: an RZ ring is the point
+/// (r, 0, z) with (v_r, 0, v_z), its deviatoric stress in (r, θ, z) components and its
+/// whole mass.
+pub(crate) fn write_snapshot<D: SceneDimension>(
+    sim: &Simulation<D, KernelChoice>,
     arrays: &Arrays,
     pressure: &[f64],
     dir: &Path,
@@ -23,7 +26,11 @@ pub(crate) fn write_snapshot(
     let path = dir.join(&name);
     let s = &sim.state;
     let n = s.particles.len();
-    let stress: Vec<[f64; 9]> = s.stress.iter().map(|m| m.to_cols_array()).collect();
+    let stress: Vec<[f64; 9]> = s
+        .stress
+        .iter()
+        .map(|m| D::tensor_to_scene(m).to_cols_array())
+        .collect();
     // Temperature only where a material has a thermal model (NaN for the others, which
     // the solver holds at 300 K without one); no array when none has.
     let thermal = sim.materials.iter().any(|m| m.thermal.is_some());

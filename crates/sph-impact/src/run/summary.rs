@@ -1,11 +1,45 @@
 //! `summary.json`: the final diagnostics and the run's cost, with the scene as parsed.
 
 use crate::run::measure::BetaMeasure;
-use crate::scene::BodyInfo;
-use crate::{Conserved, DamageEvents, PhaseTimes, SchemeConfig};
+use crate::scene::{BodyInfo, GeometryKind, SceneDimension};
+use crate::{DamageEvents, PhaseTimes, SchemeConfig, Simulation};
 use serde::Serialize;
-use sph_core::Dim3;
 use sph_diagnostics::{BodyDamage, EjectaBin, PhaseFractions};
+use sph_kernel::KernelChoice;
+
+/// Mass, momentum and energy totals of the whole bodies (in RZ 2π × the solver's totals
+/// per radian; momentum in the scene's frame, (p_r, 0, p_z) in RZ, where p_r is the sum of
+/// the rings' radial momenta, not a net momentum).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize)]
+pub struct Totals {
+    /// Σ m (kg).
+    pub mass: f64,
+    /// Σ m v (kg·m/s).
+    pub momentum: [f64; 3],
+    /// Σ ½ m v² (J).
+    pub kinetic: f64,
+    /// Σ m e (J).
+    pub internal: f64,
+}
+
+impl Totals {
+    /// The totals of a simulation's current state.
+    pub(crate) fn of<D: SceneDimension>(sim: &Simulation<D, KernelChoice>) -> Self {
+        let c = sim.conserved();
+        let f = D::BODY_FACTOR;
+        Self {
+            mass: f * c.mass,
+            momentum: D::to_scene(c.momentum).map(|p| f * p),
+            kinetic: f * c.kinetic,
+            internal: f * c.internal,
+        }
+    }
+
+    /// Kinetic + internal (J).
+    pub fn energy(&self) -> f64 {
+        self.kinetic + self.internal
+    }
+}
 
 /// Damage of one body at the end.
 #[derive(Clone, Debug, Serialize)]
@@ -36,6 +70,8 @@ impl BodyDamageSummary {
 /// Everything `summary.json` holds (SI units; NaN is written as null).
 #[derive(Clone, Debug, Serialize)]
 pub struct RunSummary {
+    /// `"3d"` or `"rz"`.
+    pub geometry: GeometryKind,
     /// Crater diameter including the spall zone (m).
     pub crater_diameter_m: f64,
     /// Diameter of the central bowl (m).
@@ -56,7 +92,7 @@ pub struct RunSummary {
     pub projectile_mass_kg: f64,
     /// Impact speed (m/s).
     pub impact_speed_m_s: f64,
-    /// Particles.
+    /// Particles (rings in RZ).
     pub particles: usize,
     /// Steps taken.
     pub steps: u64,
@@ -87,10 +123,10 @@ pub struct RunSummary {
     pub ejecta_distribution: Vec<EjectaBin>,
     /// The crater profile: bin outer radius (m) and depth (m; null in empty bins).
     pub crater_profile: (Vec<f64>, Vec<f64>),
-    /// Totals at the start.
-    pub initial: Conserved<Dim3>,
-    /// Totals at the end.
-    pub last: Conserved<Dim3>,
+    /// Totals of the whole bodies at the start.
+    pub initial: Totals,
+    /// Totals of the whole bodies at the end.
+    pub last: Totals,
     /// (E_end − E_0)/E_0.
     pub energy_error: f64,
     /// Time per solver phase (s).

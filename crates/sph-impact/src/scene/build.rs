@@ -1,15 +1,17 @@
-//! From a scene to a running simulation: the bodies' particles in one store (body k's
-//! particles contiguous, material id k), each body's solver material with its own
-//! Benz–Asphaug flaws, the scheme, the kernel; no boundaries (every surface is free).
+//! From a scene to a running simulation, 3-D or axisymmetric (RZ): the bodies' particles
+//! in one store (body k's particles contiguous, material id k), each body's solver
+//! material with its own Benz–Asphaug flaws, the scheme, the kernel; no boundaries (every
+//! surface is free; in RZ the solver adds the axis as a mirror).
 
 use crate::materials::MaterialSpec;
 use crate::scene::Scene;
+use crate::scene::dimension::{SceneDimension, SceneSimulation};
 use crate::scene::error::{SceneError, SceneErrorKind};
 use crate::scene::place::PlacedBody;
+use crate::scene::settings::GeometryKind;
 use crate::solver::{Material, Simulation};
 use serde::Serialize;
-use sph_core::{Dim3, ParticleInit, Particles};
-use sph_kernel::KernelChoice;
+use sph_core::{Dim2, Dim3, ParticleInit, Particles};
 use std::ops::Range;
 
 /// What a body became in the simulation.
@@ -17,7 +19,8 @@ use std::ops::Range;
 pub struct BodyInfo {
     /// The body's name.
     pub name: String,
-    /// Its particles' indices in the simulation (also its material id's particles).
+    /// Its particles' indices in the simulation (also its material id's particles; rings
+    /// in RZ).
     pub range: Range<usize>,
     /// Its material.
     #[serde(skip)]
@@ -26,7 +29,7 @@ pub struct BodyInfo {
     pub material_name: String,
     /// Number of particles.
     pub particles: usize,
-    /// Σ m of its particles (kg).
+    /// The body's mass (kg): Σ m of its particles, 2π Σ m in RZ.
     pub mass: f64,
     /// ρ·V of its shape (kg), when the volume is known exactly.
     pub exact_mass: Option<f64>,
@@ -46,9 +49,9 @@ impl BodyInfo {
             material: body.material.clone(),
             material_name: body.material.name.clone(),
             particles: p.len(),
-            mass: p.total_mass(),
+            mass: p.body_mass(),
             exact_mass: body.exact_mass,
-            spacing: (p.min_spacing(), p.max_spacing()),
+            spacing: p.spacing_range(),
             velocity: body.velocity.to_array(),
         }
     }
@@ -61,8 +64,8 @@ impl BodyInfo {
 
 /// A scene ready to run.
 pub struct Built {
-    /// The simulation at t = 0.
-    pub simulation: Simulation<Dim3, KernelChoice>,
+    /// The simulation at t = 0, 3-D or RZ as the scene's `geometry` says.
+    pub simulation: SceneSimulation,
     /// The bodies, in scene order (body k has material id k).
     pub bodies: Vec<BodyInfo>,
 }
@@ -82,19 +85,35 @@ impl Scene {
                 SceneErrorKind::Solver("more than 65535 bodies".into()),
             ));
         }
-        let scheme = self.solver.scheme();
-        let mut particles = Particles::<Dim3>::new();
+        let (simulation, bodies) = match self.geometry {
+            GeometryKind::ThreeD => self.assemble::<Dim3>(&placed)?,
+            GeometryKind::Rz => self.assemble::<Dim2>(&placed)?,
+        };
+        Ok(Built { simulation, bodies })
+    }
+
+    /// The simulation of the placed bodies in dimension `D`: in RZ the (r, z) particles
+    /// with their masses per radian and the axisymmetric scheme.
+    fn assemble<D: SceneDimension>(
+        &self,
+        placed: &[PlacedBody],
+    ) -> Result<(SceneSimulation, Vec<BodyInfo>), SceneError> {
+        let scheme = self.scheme();
+        debug_assert_eq!(scheme.geometry, D::GEOMETRY);
+        let mut particles = Particles::<D>::new();
         let mut spacing0 = Vec::new();
         let mut materials: Vec<Material> = Vec::with_capacity(placed.len());
         let mut bodies = Vec::with_capacity(placed.len());
         for (k, body) in placed.iter().enumerate() {
             bodies.push(BodyInfo::of(body, particles.len()));
-            let p = &body.particles;
+            let p =
+                D::placed(&body.particles).expect("the bodies are placed in the scene's geometry");
             let rho = body.material.density;
+            let velocity = D::from_scene(body.velocity);
             for i in 0..p.len() {
                 particles.push(ParticleInit {
                     position: p.positions[i],
-                    velocity: body.velocity,
+                    velocity,
                     mass: p.masses[i],
                     density: rho,
                     specific_energy: 0.0,
@@ -104,8 +123,9 @@ impl Scene {
             }
             spacing0.extend_from_slice(&p.spacing);
             // Each body is its own material: Benz–Asphaug flaws belong to one body, and
-            // the flaw count of a volume depends on the volumes of its particles.
-            let volumes: Vec<f64> = p.masses.iter().map(|m| m / rho).collect();
+            // the flaw count of a volume depends on the volumes of its particles (the
+            // rings' volumes in RZ, so the body's flaws are those of its 3-D volume).
+            let volumes = body.particles.volumes(rho);
             let seed = self.bodies[k]
                 .damage_seed
                 .unwrap_or(self.seed.wrapping_add(k as u64));
@@ -137,6 +157,6 @@ impl Scene {
                 SceneErrorKind::Solver(e.to_string()),
             ))
         })?;
-        Ok(Built { simulation, bodies })
+        Ok((D::wrap(simulation), bodies))
     }
 }

@@ -1,7 +1,7 @@
-//! The checks a scene passes before anything is placed: geometry, end time, bodies
-//! (names, shapes, placements, velocities, materials), solver settings, output and
-//! diagnostics settings. Overlapping bodies need the particles and are found when the
-//! bodies are placed ([`Scene::place`]).
+//! The checks a scene passes before anything is placed: end time, bodies (names, shapes,
+//! placements, velocities, materials; in an RZ scene also their symmetry about the z
+//! axis), solver settings, output and diagnostics settings. Overlapping bodies need the
+//! particles and are found when the bodies are placed ([`Scene::place`]).
 
 use crate::materials::MaterialSpec;
 use crate::scene::Scene;
@@ -26,18 +26,15 @@ fn positive(key: &str, value: f64, what: &str) -> Result<(), SceneError> {
 impl Scene {
     /// Checks the scene as a whole; the error names the key (and the body).
     pub fn check(&self) -> Result<(), SceneError> {
-        if self.geometry == GeometryKind::Rz {
-            return Err(SceneError::at_key(
-                "geometry",
-                SceneErrorKind::RzNotImplemented,
-            ));
-        }
         positive("end_time", self.end_time, "the end time (s)")?;
         if self.bodies.is_empty() {
             return Err(SceneError::at_key("body", SceneErrorKind::NoBodies));
         }
         for (i, b) in self.bodies.iter().enumerate() {
             b.check(i)?;
+            if self.geometry == GeometryKind::Rz {
+                b.check_axisymmetric(i)?;
+            }
             if self.bodies[..i].iter().any(|o| o.name == b.name) {
                 return Err(SceneError::in_body(
                     i,

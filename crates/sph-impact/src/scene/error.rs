@@ -62,9 +62,10 @@ pub enum SceneErrorKind {
         /// The first such particle's position (m).
         first: [f64; 3],
     },
-    /// Axisymmetric runs are not implemented yet.
-    #[error("axisymmetric (RZ) geometry is not implemented yet (use geometry = \"3d\")")]
-    RzNotImplemented,
+    /// A body of an axisymmetric (RZ) scene is not symmetric about the z axis; what is
+    /// wrong and what is accepted.
+    #[error("not axisymmetric about the z axis, as geometry = \"rz\" needs: {0}")]
+    NotAxisymmetric(String),
     /// The solver settings are out of range, or the solver rejected the set-up.
     #[error("{0}")]
     Solver(String),

@@ -10,13 +10,16 @@
 //! - **steps** = end time / first dt (the step shrinks when shocks compress and heat the
 //!   material, so this is a lower bound);
 //! - **runtime** = steps × 2 derivative evaluations (RK2) × particles / (rate × cores),
-//!   with the rate [`ASSUMED_EVALUATIONS_PER_CORE_SOLID`] for scenes with strength and
-//!   [`ASSUMED_EVALUATIONS_PER_CORE_FLUID`] otherwise (docs/performance.md);
-//! - **memory** = particles × [`ASSUMED_BYTES_PER_PARTICLE`].
+//!   with the rate [`ASSUMED_EVALUATIONS_PER_CORE_SOLID`] for 3-D scenes with strength and
+//!   [`ASSUMED_EVALUATIONS_PER_CORE_FLUID`] otherwise (docs/performance.md); for RZ
+//!   scenes those rates × [`RZ_RATE_FACTOR`], the 3-D neighbour count over the 2-D one;
+//! - **memory** = particles × [`ASSUMED_BYTES_PER_PARTICLE`] (the 3-D figure, an upper
+//!   bound for RZ).
 
 use crate::scene::Scene;
 use crate::scene::build::BodyInfo;
 use crate::scene::error::SceneError;
+use crate::scene::settings::GeometryKind;
 use serde::Serialize;
 
 /// Derivative evaluations per second per core assumed for a solid scene: the `solid3d`
@@ -27,6 +30,13 @@ pub const ASSUMED_EVALUATIONS_PER_CORE_SOLID: f64 = 1.05e5;
 /// Derivative evaluations per second per core assumed for a fluid scene: the 3-D Sedov
 /// bench (1.0e5, docs/performance.md).
 pub const ASSUMED_EVALUATIONS_PER_CORE_FLUID: f64 = 1.0e5;
+
+/// An RZ particle costs less than a 3-D one by the ratio of neighbour counts in the
+/// support, (4π/3) n³ / (π n²) = 4n/3 for n = 2.5 spacings per support radius (65.4
+/// against 19.6 neighbours): the rate assumed for RZ scenes is the 3-D one × this. An
+/// assumption (the pair loop dominates the cost), checked against the RZ basalt scene in
+/// docs/scenes.md.
+pub const RZ_RATE_FACTOR: f64 = 4.0 * 2.5 / 3.0;
 
 /// Memory per particle assumed (bytes): the peak resident growth per particle of the
 /// `solid3d` bench, 2432 bytes (state, three RK2 copies, neighbour list at ≈ 65
@@ -61,6 +71,8 @@ pub struct BodyReport {
 pub struct CheckReport {
     /// The scene file (or `"<builder>"`).
     pub scene: String,
+    /// `"3d"` or `"rz"` (then particles are rings and masses the whole rings').
+    pub geometry: GeometryKind,
     /// Per body.
     pub bodies: Vec<BodyReport>,
     /// All particles.
@@ -128,10 +140,14 @@ impl Scene {
             ASSUMED_EVALUATIONS_PER_CORE_SOLID
         } else {
             ASSUMED_EVALUATIONS_PER_CORE_FLUID
+        } * match self.geometry {
+            GeometryKind::ThreeD => 1.0,
+            GeometryKind::Rz => RZ_RATE_FACTOR,
         };
         let threads = threads.max(1);
         Ok(CheckReport {
             scene: self.origin().unwrap_or("<builder>").to_owned(),
+            geometry: self.geometry,
             particles: start,
             bodies,
             resolution_scale,
@@ -157,6 +173,12 @@ impl CheckReport {
             "scene {} (resolution scale {})",
             self.scene, self.resolution_scale
         );
+        if self.geometry == GeometryKind::Rz {
+            let _ = writeln!(
+                s,
+                "geometry        RZ (axisymmetric): particles are rings, masses the whole rings'"
+            );
+        }
         for b in &self.bodies {
             let _ = writeln!(s, "body \"{}\" ({})", b.name, b.material);
             let _ = writeln!(s, "  particles     {}", b.particles);
@@ -193,14 +215,14 @@ impl CheckReport {
         );
         let _ = writeln!(
             s,
-            "runtime         ≈ {} on {} thread(s) (assumed {:.0e} derivative evaluations/s/core, 2 per RK2 step)",
+            "runtime         ≈ {} on {} thread(s) (estimate: assumed {:.2e} derivative evaluations/s/core, 2 per RK2 step)",
             human_seconds(self.runtime_s),
             self.threads,
             self.assumed_rate_per_core
         );
         let _ = writeln!(
             s,
-            "memory          ≈ {:.2} GB (assumed {:.0} bytes/particle)",
+            "memory          ≈ {:.2} GB (estimate: assumed {:.0} bytes/particle)",
             self.memory_bytes / 1e9,
             ASSUMED_BYTES_PER_PARTICLE
         );

@@ -5,7 +5,8 @@
 //! output cadence and the diagnostics settings. It is read from TOML
 //! ([`Scene::from_toml_str`], [`Scene::from_toml_file`]; every table rejects unknown
 //! keys and every error is one line naming file, line, column, body and key) or built in
-//! Rust ([`SceneBuilder`]); [`Scene::build`] turns it into a [`crate::Simulation`].
+//! Rust ([`SceneBuilder`]); [`Scene::build`] turns it into a [`crate::Simulation`]: 3-D,
+//! or with `geometry = "rz"` an axisymmetric one on (r, z) particles ([`SceneSimulation`]).
 //! The format is documented key by key in `docs/scenes.md`.
 //!
 //! ```
@@ -33,10 +34,12 @@
 //! ));
 //! ```
 
+mod axisymmetry;
 mod body;
 mod build;
 mod builder;
 mod check;
+mod dimension;
 mod error;
 mod estimate;
 mod material_ref;
@@ -50,14 +53,16 @@ mod spans;
 pub use body::{BodySpec, PlacementSpec, ShapeSpec};
 pub use build::{BodyInfo, Built};
 pub use builder::SceneBuilder;
+pub(crate) use dimension::SceneDimension;
+pub use dimension::SceneSimulation;
 pub use error::{SceneError, SceneErrorKind};
 pub(crate) use estimate::human_seconds as estimate_human_seconds;
 pub use estimate::{
     ASSUMED_BYTES_PER_PARTICLE, ASSUMED_EVALUATIONS_PER_CORE_FLUID,
-    ASSUMED_EVALUATIONS_PER_CORE_SOLID, BodyReport, CheckReport,
+    ASSUMED_EVALUATIONS_PER_CORE_SOLID, BodyReport, CheckReport, RZ_RATE_FACTOR,
 };
 pub use material_ref::MaterialRef;
-pub use place::PlacedBody;
+pub use place::{PlacedBody, PlacedParticles};
 pub use roles::DiagnosticSetup;
 pub use settings::{DiagnosticsSettings, GeometryKind, OutputSettings};
 pub use solver_settings::{
@@ -81,7 +86,7 @@ pub struct Scene {
     /// Free text describing the scene.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub description: Option<String>,
-    /// `"3d"` (default) or `"rz"` (not implemented yet).
+    /// `"3d"` (default) or `"rz"` (axisymmetric about z).
     #[serde(default)]
     pub geometry: GeometryKind,
     /// Simulated time to run (s), > 0.
@@ -107,9 +112,15 @@ pub struct Scene {
 }
 
 impl Scene {
-    /// The numerical scheme: `[solver]` over [`study_scheme`].
+    /// The numerical scheme: `[solver]` over [`study_scheme`], in the scene's geometry
+    /// (`geometry = "rz"` sets [`crate::Geometry::Axisymmetric`]).
     pub fn scheme(&self) -> crate::SchemeConfig {
-        self.solver.scheme()
+        let mut s = self.solver.scheme();
+        s.geometry = match self.geometry {
+            GeometryKind::ThreeD => crate::Geometry::Cartesian,
+            GeometryKind::Rz => crate::Geometry::Axisymmetric,
+        };
+        s
     }
 
     /// The scene as TOML; reading it back gives an equal scene. Fails only for a

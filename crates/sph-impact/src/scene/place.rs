@@ -1,14 +1,85 @@
-//! Filling each body with particles, and the overlap check: no particle of one body may
-//! lie inside another body's shape (two bodies in one place would double the mass
-//! there, and their pair forces start from an unphysical compression).
+//! Filling each body with particles — in 3-D, or in the (r, z) half-plane for an
+//! axisymmetric (RZ) scene — and the overlap check: no particle of one body may lie
+//! inside another body's shape (two bodies in one place would double the mass there,
+//! and their pair forces start from an unphysical compression).
 
 use crate::materials::MaterialSpec;
 use crate::scene::Scene;
 use crate::scene::body::PlacementSpec;
 use crate::scene::error::{SceneError, SceneErrorKind};
+use crate::scene::settings::GeometryKind;
 use rayon::prelude::*;
-use sph_core::glam::DVec3;
-use sph_geometry::{BodyParticles, FibonacciPlacement, Shape, cubic_lattice};
+use sph_core::glam::{DVec2, DVec3};
+use sph_geometry::{
+    BodyParticles, FibonacciPlacement, GeometryError, RzLayeredPlacement, Shape, cubic_lattice,
+    rz_lattice,
+};
+use std::f64::consts::TAU;
+
+/// A body's particles in the scene's geometry.
+#[derive(Clone, Debug)]
+pub enum PlacedParticles {
+    /// 3-D: positions (m), masses (kg), spacings (m).
+    ThreeD(BodyParticles<DVec3>),
+    /// RZ: positions (r, z) in the half-plane r > 0 (m), ring masses per radian (kg/rad),
+    /// spacings (m).
+    Rz(BodyParticles<DVec2>),
+}
+
+impl PlacedParticles {
+    /// Number of particles.
+    pub fn len(&self) -> usize {
+        match self {
+            Self::ThreeD(p) => p.len(),
+            Self::Rz(p) => p.len(),
+        }
+    }
+
+    /// True without particles (placements never return this).
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+
+    /// The body's mass (kg): Σ m in 3-D, 2π Σ m in RZ.
+    pub fn body_mass(&self) -> f64 {
+        match self {
+            Self::ThreeD(p) => p.total_mass(),
+            Self::Rz(p) => TAU * p.total_mass(),
+        }
+    }
+
+    /// Each particle's spacing (m).
+    pub fn spacing(&self) -> &[f64] {
+        match self {
+            Self::ThreeD(p) => &p.spacing,
+            Self::Rz(p) => &p.spacing,
+        }
+    }
+
+    /// Finest and coarsest spacing (m).
+    pub fn spacing_range(&self) -> (f64, f64) {
+        match self {
+            Self::ThreeD(p) => (p.min_spacing(), p.max_spacing()),
+            Self::Rz(p) => (p.min_spacing(), p.max_spacing()),
+        }
+    }
+
+    /// The volume each particle stands for (m³): m/ρ, the ring's 2π m/ρ in RZ.
+    pub fn volumes(&self, density: f64) -> Vec<f64> {
+        match self {
+            Self::ThreeD(p) => p.masses.iter().map(|m| m / density).collect(),
+            Self::Rz(p) => p.masses.iter().map(|m| TAU * m / density).collect(),
+        }
+    }
+
+    /// Particle `i` as a 3-D point: itself, or (r, 0, z) in RZ.
+    pub fn point(&self, i: usize) -> DVec3 {
+        match self {
+            Self::ThreeD(p) => p.positions[i],
+            Self::Rz(p) => DVec3::new(p.positions[i].x, 0.0, p.positions[i].y),
+        }
+    }
+}
 
 /// One body filled with particles.
 #[derive(Clone, Debug)]
@@ -17,18 +88,44 @@ pub struct PlacedBody {
     pub name: String,
     /// Its material.
     pub material: MaterialSpec,
-    /// Its particles (positions m, masses kg, spacings m).
-    pub particles: BodyParticles<DVec3>,
+    /// Its particles.
+    pub particles: PlacedParticles,
     /// ρ·V of its shape (kg), when the shape's volume is known exactly.
     pub exact_mass: Option<f64>,
     /// Initial velocity (m/s).
     pub velocity: DVec3,
 }
 
+/// Fills `shape` as `placement` says, in `geometry`.
+fn fill(
+    shape: &dyn Shape<DVec3>,
+    placement: PlacementSpec,
+    rho: f64,
+    geometry: GeometryKind,
+) -> Result<PlacedParticles, GeometryError> {
+    Ok(match (geometry, placement) {
+        (GeometryKind::ThreeD, PlacementSpec::Lattice { spacing }) => {
+            PlacedParticles::ThreeD(cubic_lattice(shape, spacing, rho)?)
+        }
+        (GeometryKind::ThreeD, PlacementSpec::Variable { origin, a_res, q }) => {
+            PlacedParticles::ThreeD(
+                FibonacciPlacement::new(DVec3::from_array(origin), a_res, q, rho)?.place(shape)?,
+            )
+        }
+        (GeometryKind::Rz, PlacementSpec::Lattice { spacing }) => {
+            PlacedParticles::Rz(rz_lattice(shape, spacing, rho)?)
+        }
+        // The origin is on the axis (`check_axisymmetric`): only its z counts.
+        (GeometryKind::Rz, PlacementSpec::Variable { origin, a_res, q }) => {
+            PlacedParticles::Rz(RzLayeredPlacement::new(origin[2], a_res, q, rho)?.place(shape)?)
+        }
+    })
+}
+
 impl Scene {
-    /// Places every body's particles, with all spacings divided by `resolution_scale`
-    /// (> 0; 1 is the scene as written, 2 halves the spacings), and checks that no body
-    /// overlaps another.
+    /// Places every body's particles in the scene's geometry, with all spacings divided
+    /// by `resolution_scale` (> 0; 1 is the scene as written, 2 halves the spacings), and
+    /// checks that no body overlaps another.
     pub fn place(&self, resolution_scale: f64) -> Result<Vec<PlacedBody>, SceneError> {
         if !(resolution_scale > 0.0 && resolution_scale.is_finite()) {
             return Err(SceneError::general(SceneErrorKind::Invalid {
@@ -47,16 +144,13 @@ impl Scene {
             let geometry = |e: sph_geometry::GeometryError| {
                 err("placement", SceneErrorKind::Geometry(e.to_string()))
             };
-            let particles = match b.placement.refined(resolution_scale) {
-                PlacementSpec::Lattice { spacing } => {
-                    cubic_lattice(&shape, spacing, rho).map_err(geometry)?
-                }
-                PlacementSpec::Variable { origin, a_res, q } => {
-                    FibonacciPlacement::new(DVec3::from_array(origin), a_res, q, rho)
-                        .and_then(|p| p.place(&shape))
-                        .map_err(geometry)?
-                }
-            };
+            let particles = fill(
+                shape.as_ref(),
+                b.placement.refined(resolution_scale),
+                rho,
+                self.geometry,
+            )
+            .map_err(geometry)?;
             placed.push(PlacedBody {
                 name: b.name.clone(),
                 exact_mass: shape.volume().map(|v| rho * v),
@@ -71,7 +165,7 @@ impl Scene {
                 if i == j {
                     continue;
                 }
-                if let Some((count, first)) = inside(&body.particles.positions, shape.as_ref()) {
+                if let Some((count, first)) = inside(&body.particles, shape.as_ref()) {
                     return Err(self.locate(SceneError::in_body(
                         i,
                         &body.name,
@@ -89,15 +183,17 @@ impl Scene {
     }
 }
 
-/// How many of `points` lie in `shape`, and the first of them; `None` for none.
-fn inside(points: &[DVec3], shape: &dyn Shape<DVec3>) -> Option<(usize, DVec3)> {
+/// How many of the particles lie in `shape` (as 3-D points), and the first of them;
+/// `None` for none.
+fn inside(particles: &PlacedParticles, shape: &dyn Shape<DVec3>) -> Option<(usize, DVec3)> {
     // Cheap rejection first: a body far from the shape's box has nothing inside.
     let bounds = shape.bounds();
-    let hits: Vec<usize> = points
-        .par_iter()
-        .enumerate()
-        .filter(|(_, p)| bounds.is_none_or(|b| b.contains(**p)) && shape.contains(**p))
-        .map(|(k, _)| k)
+    let hits: Vec<usize> = (0..particles.len())
+        .into_par_iter()
+        .filter(|&k| {
+            let p = particles.point(k);
+            bounds.is_none_or(|b| b.contains(p)) && shape.contains(p)
+        })
         .collect();
-    hits.first().map(|&k| (hits.len(), points[k]))
+    hits.first().map(|&k| (hits.len(), particles.point(k)))
 }

@@ -2,14 +2,15 @@
 
 use serde::{Deserialize, Serialize};
 
-/// The run's geometry.
+/// The run's geometry (serialised as `"3d"` or `"rz"`).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
 pub enum GeometryKind {
     /// Full 3-D.
     #[default]
     #[serde(rename = "3d")]
     ThreeD,
-    /// Axisymmetric about z (not implemented yet: building such a scene is an error).
+    /// Axisymmetric about z: every body a sphere or cylinder on the z axis, moving along
+    /// it; the run has 2-D particles in the (r, z) half-plane, each a ring.
     #[serde(rename = "rz")]
     Rz,
 }

@@ -22,13 +22,24 @@
 //!
 //! Next to the axis the pair sums see mirror images (the axis is a reflecting wall: P, ρ, r
 //! and S_rr even, v_r and S_rz odd), which makes their estimate of ∂(r P)/∂r miss part of
-//! P. The hoop force therefore uses ŝ_i, the pair sums' own estimate of ∂r/∂r
-//! (`Rates::hoop_gauge`, → 1 away from the axis), so a uniform stress is in equilibrium
-//! exactly everywhere. Summation density divides Σ m W by the same smoothing of r. The
+//! P. Within two support radii of the axis the hoop force therefore uses ŝ_i, the pair
+//! sums' own estimate of ∂r/∂r (`Rates::hoop_gauge`), so a uniform stress is in
+//! equilibrium exactly there. Beyond three support radii it uses the exact ∂r/∂r = 1
+//! (blended smoothly in between): out there ŝ no longer measures the axis but free
+//! surfaces and density jumps, where it grows like r/h and would turn any σ_rr ≠ σ_θθ
+//! into a spurious radial force (it made the rim of a Taylor bar's foot jet outward at
+//! km/s, and skewed the RZ Sedov front). Far from the axis a uniform stress is then in
+//! equilibrium to the lattice's first-moment error (3e-7 m/s after a step in the test,
+//! against 2e-4 m/s of free-surface release). Summation density divides Σ m W by the
+//! same smoothing of r. The
 //! smoothing length follows the area per particle, h = n_target (m/(ρ r))^(1/2). Totals
-//! (`Simulation::conserved`) are per radian: multiply by 2π for the bodies'. The Monaghan
+//! (`Simulation::conserved`) are per radian: multiply by 2π for the bodies'. A mirror
+//! ghost of a wall normal to r (a cylinder wall) carries the ring mass of its own radius,
+//! m r'/r, so it stands for the same area of material as its source. The Monaghan
 //! viscosity and the artificial stress are weighted like the pressure (× r̄/(r_i r_j),
-//! R/r) and have no hoop part.
+//! R/r) and have no hoop part. (With R̂ in place of r in those two weights the spherical
+//! Noh run lost 4.7e-4 of its energy instead of 5e-7, and an impact with ε = 0.2 still
+//! collapsed at ~3.9 µs: docs/verification.md.)
 
 use crate::solver::config::EnergyForm;
 use crate::solver::derivatives::{Gradients, Rates};

@@ -126,6 +126,10 @@ pub struct SchemeConfig {
     /// What a 2-D run stands for: the plane, or rings about the z axis (RZ; see
     /// [`crate::solver::axisymmetric`]).
     pub geometry: crate::solver::axisymmetric::Geometry,
+    /// A step shorter than this fraction of the run's first step is a collapse: the run
+    /// stops with [`crate::SolverError::TimestepCollapse`] naming the particle and the
+    /// reason, instead of crawling on at ever smaller steps (0 disables).
+    pub dt_floor_fraction: f64,
 }
 
 impl Default for SchemeConfig {
@@ -156,6 +160,7 @@ impl Default for SchemeConfig {
             unbonded_interfaces: true,
             smoothing: SmoothingMode::Scalar,
             geometry: crate::solver::axisymmetric::Geometry::Cartesian,
+            dt_floor_fraction: 1e-6,
         }
     }
 }
@@ -175,6 +180,13 @@ impl SchemeConfig {
                 "n_target",
                 self.n_target,
                 "must be a finite number of spacings > 0.5",
+            );
+        }
+        if !(self.dt_floor_fraction >= 0.0 && self.dt_floor_fraction < 1.0) {
+            return bad(
+                "dt_floor_fraction",
+                self.dt_floor_fraction,
+                "must be in [0, 1)",
             );
         }
         if !(self.cfl > 0.0 && self.cfl <= 1.0) {

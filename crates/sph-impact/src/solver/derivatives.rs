@@ -395,7 +395,14 @@ pub(crate) fn rates<D: Dimension, P: PairKernel<D>>(
                 out.drho /= gr[i].omega.clamp(0.5, 2.0);
             }
             if rz {
-                out.hoop_gauge = ri * gauge_a + gauge_g;
+                // ŝ = r_i Σ V_j ∂_r W + Σ V_j r_j ∂_r W balances the pair sums' estimate of
+                // ∂(r σ_rr)/∂r for a uniform stress, which the axis' mirror images and R̂
+                // bias within two support radii of the axis. Farther out that bias is gone
+                // and ŝ instead measures free surfaces and density jumps (∝ r_i/h at a
+                // surface), where it would turn σ_rr ≠ σ_θθ into a spurious radial force:
+                // there the gauge is the exact ∂r/∂r = 1, blended smoothly. axisymmetric.rs.
+                let keep = axis_zone(ri / pk.h(i));
+                out.hoop_gauge = keep * (ri * gauge_a + gauge_g) + (1.0 - keep);
             }
             // dS/dt = 2G ε̇' + ΩS − SΩ with the particle's velocity gradient embedded in 3-D
             // (1-D uniaxial and 2-D plane strain: the out-of-plane rates are zero).
@@ -413,4 +420,12 @@ pub(crate) fn rates<D: Dimension, P: PairKernel<D>>(
             out
         })
         .collect()
+}
+
+/// Weight of the axis part of the hoop gauge at q = r/h: 1 within two support radii of
+/// the axis (where the mirror images and R̂ reach a particle or its neighbours), 0 beyond
+/// three, smooth in between.
+fn axis_zone(q: f64) -> f64 {
+    let t = (q - 2.0).clamp(0.0, 1.0);
+    1.0 - t * t * (3.0 - 2.0 * t)
 }

@@ -115,6 +115,8 @@ pub struct Simulation<D: Dimension, K: Kernel> {
     held: Vec<bool>,
     /// RZ with summation density: the kernel-smoothed radius table.
     smoothed_radius: Option<SmoothedRadius>,
+    /// The first step's vote (the reference of `SchemeConfig::dt_floor_fraction`).
+    first_dt: Option<f64>,
     kernel: K,
     search: CellList,
 }
@@ -208,6 +210,7 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
             boundary_impulse: D::Vector::ZERO,
             damage_events: DamageEvents::default(),
             held: Vec::new(),
+            first_dt: None,
             smoothed_radius: rz.then(|| {
                 SmoothedRadius::new(|u, v| {
                     kernel.w(D::Vector::from_fn(|k| if k == 0 { u } else { v }), 1.0)
@@ -328,6 +331,13 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
                 .zip(&ext.h)
                 .map(|(&r, &h)| table.at(r, h))
                 .collect();
+            // A mirror ghost stands for the same area of material as its source, so its
+            // ring mass per radian scales with its own radius: ρ A r' (a wall normal to
+            // r is a cylinder; the axis and walls normal to z leave r unchanged).
+            for k in ext.n_real..ext.position.len() {
+                let src = ext.source[k] as usize;
+                ext.mass[k] *= ext.radius[k] / ext.radius[src];
+            }
         }
         let list = if ext.h_tensor.is_empty() {
             self.search
@@ -496,11 +506,13 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
         let (s0, _) = self.stage(&mut s0_state)?;
         let vote = self.vote(&s0_state, &s0);
         let dt = vote.dt.min(max_dt);
-        if !(dt > 0.0 && dt.is_finite()) {
+        // The floor applies to the vote, not to a step shortened to land on an end time.
+        let floor = self.first_dt.get_or_insert(vote.dt).to_owned() * self.scheme.dt_floor_fraction;
+        if !(dt > 0.0 && dt.is_finite()) || vote.dt < floor {
             return Err(SolverError::TimestepCollapse {
                 step: self.state.step,
-                dt,
-                min: 0.0,
+                dt: vote.dt,
+                min: floor,
                 id: vote.particle_id,
                 reason: vote.reason,
             });

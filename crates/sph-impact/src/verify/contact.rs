@@ -9,8 +9,9 @@
 //! free ends: the median pressure between the two shock fronts (away from both by a fifth
 //! of the gap), and the minimum density and finiteness over the run.
 
+use super::column::{Planar, PlanarRun};
 use super::outcome::{Outcome, Profile};
-use super::setup::{median, simulation};
+use super::setup::median;
 use crate::{Material, SchemeConfig, SolverError};
 use sph_core::{Dim1, ParticleInit, Particles};
 use sph_eos::{EquationOfState, Tillotson, TillotsonParams, hugoniot};
@@ -39,8 +40,13 @@ fn impedance_match(al: &Tillotson, ba: &Tillotson) -> Result<(f64, f64), SolverE
     Ok((u, hugoniot(ba, rho_ba, u).map_err(bad)?.pressure))
 }
 
-/// Runs with `n` particles per plate (plates 5 cm long).
-pub(crate) fn run(n: usize, scheme: SchemeConfig) -> Result<Outcome, SolverError> {
+/// Runs with `n` particles per plate (plates 5 cm long), in 1-D (then also the 3-D
+/// sphere) or as an RZ column (the profile on the axis).
+pub(crate) fn run(
+    n: usize,
+    scheme: SchemeConfig,
+    geometry: Planar,
+) -> Result<Outcome, SolverError> {
     // The 3-D part keeps the solver's n_target (the 1-D default of 4 is for this planar
     // part only) unless the caller changed it from 4.
     let mut sphere_scheme = scheme.clone();
@@ -80,7 +86,7 @@ pub(crate) fn run(n: usize, scheme: SchemeConfig) -> Result<Outcome, SolverError
         Material::fluid("aluminium (Tillotson, study)", al),
         Material::fluid("basalt (Tillotson, study)", ba),
     ];
-    let mut sim = simulation(p, mats, scheme, Vec::new(), Some(vec![dx; 2 * n]))?;
+    let mut sim = PlanarRun::new(p, mats, scheme, dx, geometry)?;
     let us_ba = hugoniot(&ba, rho_ba, u_contact).map_err(bad)?.shock_speed;
     let us_al = hugoniot(&al, rho_al, SPEED - u_contact)
         .map_err(bad)?
@@ -89,21 +95,11 @@ pub(crate) fn run(n: usize, scheme: SchemeConfig) -> Result<Outcome, SolverError
     let t_end = 0.6 * LENGTH / us_ba.max(us_al);
     let mut min_rho = f64::INFINITY;
     let wall = std::time::Instant::now();
-    let steps = sim.run_until(t_end, |s, _| {
-        min_rho = s
-            .state
-            .particles
-            .density
-            .iter()
-            .cloned()
-            .fold(min_rho, f64::min);
+    let steps = sim.run_until(t_end, |rho| {
+        min_rho = rho.iter().cloned().fold(min_rho, f64::min);
     })?;
-    let (pr, _) = sim.pressure_and_sound_speed();
-    let pa = &sim.state.particles;
-    let mut idx: Vec<usize> = (0..pa.len()).collect();
-    idx.sort_by(|&a, &b| pa.position[a].total_cmp(&pa.position[b]));
-    let x: Vec<f64> = idx.iter().map(|&i| pa.position[i]).collect();
-    let press: Vec<f64> = idx.iter().map(|&i| pr[i]).collect();
+    let prof = sim.profile();
+    let (x, press) = (&prof.x, &prof.p);
     // Fronts (lab frame): the contact moves at u; the basalt shock at U_s,ba; the Al shock
     // moves back into Al at V − U_s,al. The contact started at x = 0.
     let (x_ba, x_al) = (us_ba * t_end, (SPEED - us_al) * t_end);
@@ -113,10 +109,7 @@ pub(crate) fn run(n: usize, scheme: SchemeConfig) -> Result<Outcome, SolverError
         .map(|k| press[k])
         .collect();
     let p_num = median(zone);
-    let v_sorted: Vec<f64> = idx
-        .iter()
-        .map(|&i| sim.state.particles.velocity[i])
-        .collect();
+    let v_sorted = &prof.v;
     let u_num = median(
         (0..x.len())
             .filter(|&k| x[k] > x_al + 0.2 * gap && x[k] < x_ba - 0.2 * gap)
@@ -124,7 +117,10 @@ pub(crate) fn run(n: usize, scheme: SchemeConfig) -> Result<Outcome, SolverError
             .collect(),
     );
     let mut out = Outcome {
-        problem: "contact".into(),
+        problem: match geometry {
+            Planar::OneD => "contact".into(),
+            Planar::Rz { .. } => "contact (rz)".into(),
+        },
         ..Default::default()
     };
     out.set("impact_speed", SPEED);
@@ -139,9 +135,19 @@ pub(crate) fn run(n: usize, scheme: SchemeConfig) -> Result<Outcome, SolverError
     out.set("min_density_over_run", min_rho);
     out.set("t_end", t_end);
     out.set("steps", steps as f64);
-    out.set("particles", pa.len() as f64);
+    out.set("particles", sim.particles() as f64);
     out.set("resolution", n as f64);
     out.set("wall_time_s", wall.elapsed().as_secs_f64());
+    let profile = Profile {
+        columns: ["x", "rho", "v", "p"].map(String::from).to_vec(),
+        rows: (0..x.len())
+            .map(|k| vec![x[k], prof.rho[k], prof.v[k], press[k]])
+            .collect(),
+    };
+    out.profile = profile;
+    if geometry != Planar::OneD {
+        return Ok(out);
+    }
     // The 3-D sphere into a block with the study's full material models, 12 spacings
     // across the sphere (the study's 0.5 mm).
     let sc = super::contact3d::run(12, sphere_scheme)?;
@@ -159,13 +165,5 @@ pub(crate) fn run(n: usize, scheme: SchemeConfig) -> Result<Outcome, SolverError
     );
     out.set("sphere_target_fully_damaged_fraction", sc.damaged_fraction);
     out.set("sphere_wall_time_s", sc.wall_time_s);
-    let v: Vec<f64> = idx.iter().map(|&i| pa.velocity[i]).collect();
-    let rho: Vec<f64> = idx.iter().map(|&i| pa.density[i]).collect();
-    out.profile = Profile {
-        columns: ["x", "rho", "v", "p"].map(String::from).to_vec(),
-        rows: (0..x.len())
-            .map(|k| vec![x[k], rho[k], v[k], press[k]])
-            .collect(),
-    };
     Ok(out)
 }

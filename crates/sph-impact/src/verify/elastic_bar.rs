@@ -44,6 +44,18 @@ pub(crate) fn two_plates(
     yield_strength: f64,
     scheme: SchemeConfig,
 ) -> Result<(Simulation<Dim1, KernelChoice>, f64), SolverError> {
+    let (p, plates, c_l, _) = two_plates_set_up(n, length, speed, yield_strength, &scheme)?;
+    Ok((simulation(p, plates, scheme, Vec::new(), None)?, c_l))
+}
+
+/// The particles and materials of [`two_plates`], with c_L and the spacing.
+pub(crate) fn two_plates_set_up(
+    n: usize,
+    length: f64,
+    speed: f64,
+    yield_strength: f64,
+    scheme: &SchemeConfig,
+) -> Result<(Particles<Dim1>, Vec<Material>, f64, f64), SolverError> {
     let bulk = E_YOUNG / (3.0 * (1.0 - 2.0 * NU));
     let shear = E_YOUNG / (2.0 * (1.0 + NU));
     let c_l = ((bulk + 4.0 / 3.0 * shear) / RHO).sqrt();
@@ -69,7 +81,7 @@ pub(crate) fn two_plates(
         Material::solid("plate A (aluminium)", eos, strength),
         Material::solid("plate B", eos, strength),
     ];
-    Ok((simulation(p, plates, scheme, Vec::new(), None)?, c_l))
+    Ok((p, plates, c_l, dx))
 }
 
 /// Runs with `n` particles per bar.

@@ -11,7 +11,8 @@
 //! half-HEL crossing (its speed taken relative to the material, which moves at −V/2), and
 //! the plastic state behind the plastic front.
 
-use super::elastic_bar::{axial_stress, two_plates};
+use super::column::{Planar, PlanarRun};
+use super::elastic_bar::two_plates_set_up;
 use super::outcome::{Outcome, Profile};
 use super::setup::{last_crossing, median};
 use crate::{SchemeConfig, SolverError};
@@ -21,22 +22,34 @@ const YIELD: f64 = 0.29e9;
 /// smeared plastic front before it reaches the free end.
 const LENGTH: f64 = 0.4;
 
-/// Runs with `n` particles per plate at both impact speeds.
-pub(crate) fn run(n: usize, scheme: SchemeConfig) -> Result<Outcome, SolverError> {
+/// Runs with `n` particles per plate at both impact speeds, in 1-D or as an RZ column
+/// (the profile then on the axis).
+pub(crate) fn run(
+    n: usize,
+    scheme: SchemeConfig,
+    geometry: Planar,
+) -> Result<Outcome, SolverError> {
     let mut out = Outcome {
-        problem: "hel-impact".into(),
+        problem: match geometry {
+            Planar::OneD => "hel-impact".into(),
+            Planar::Rz { .. } => "hel-impact (rz)".into(),
+        },
         ..Default::default()
     };
     let wall = std::time::Instant::now();
+    let mut particles = 0;
     for (label, v_impact, plastic_exact) in [("v400", 400.0, 2.618e9), ("v1000", 1000.0, 6.383e9)] {
-        let (mut sim, c_l) = two_plates(n, LENGTH, 0.5 * v_impact, YIELD, scheme.clone())?;
+        let (p, plates, c_l, dx) = two_plates_set_up(n, LENGTH, 0.5 * v_impact, YIELD, &scheme)?;
+        let mut sim = PlanarRun::new(p, plates, scheme.clone(), dx, geometry)?;
+        particles = sim.particles();
         let bulk = 70.0e9 / (3.0 * (1.0 - 0.6));
         let shear = 70.0e9 / 2.6;
         let hel = (bulk + 4.0 / 3.0 * shear) * YIELD / (2.0 * shear);
         let c_b = (bulk / 2700.0).sqrt();
         let t = 0.8 * LENGTH / c_l;
-        sim.run_until(t, |_, _| {})?;
-        let (x, sxx, _) = axial_stress(&sim);
+        sim.run_until(t, |_| {})?;
+        let prof = sim.profile();
+        let (x, sxx) = (prof.x, prof.sigma);
         let right: Vec<usize> = (0..x.len()).filter(|&k| x[k] > 0.0).collect();
         let xr: Vec<f64> = right.iter().map(|&k| x[k]).collect();
         let compression: Vec<f64> = right.iter().map(|&k| -sxx[k]).collect();
@@ -87,6 +100,7 @@ pub(crate) fn run(n: usize, scheme: SchemeConfig) -> Result<Outcome, SolverError
         }
     }
     out.set("resolution", n as f64);
+    out.set("particles", particles as f64);
     out.set("wall_time_s", wall.elapsed().as_secs_f64());
     Ok(out)
 }

@@ -3,6 +3,7 @@
 //!
 //! Run one with `sph-impact verify NAME [--resolution N] [--out DIR] [--json]`.
 
+mod column;
 mod contact;
 mod contact3d;
 mod elastic_bar;
@@ -23,6 +24,9 @@ pub use contact3d::sphere_into_block;
 pub use outcome::{Outcome, Panel, Picture, Profile};
 
 use std::str::FromStr;
+
+/// Width of the RZ column (in spacings) that runs a planar problem along the axis.
+const RZ_COLUMNS: usize = 12;
 
 /// A verification problem.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -197,8 +201,9 @@ impl Problem {
         self.run_with(resolution, self.default_scheme())
     }
 
-    /// Runs the problem in axisymmetric RZ geometry (the 3-D problems that have an RZ
-    /// form: `sedov-3d`, `noh-spherical`, `taylor`), at `resolution` with the given scheme.
+    /// Runs the problem in axisymmetric RZ geometry (the problems that have an RZ form:
+    /// `noh-planar` along z, `sedov-3d`, `noh-spherical`, `taylor`), at `resolution`
+    /// with the given scheme.
     pub fn run_rz(
         &self,
         resolution: Option<usize>,
@@ -210,10 +215,25 @@ impl Problem {
             Problem::Sedov3d => sedov::run_rz(n, scheme),
             Problem::NohSpherical => noh::run_spherical_rz(n, scheme),
             Problem::Taylor => taylor::run_rz(n, scheme),
+            Problem::NohPlanar => noh::run_planar_rz(n, scheme),
+            Problem::HelImpact => hel_impact::run(
+                n,
+                scheme,
+                column::Planar::Rz {
+                    columns: RZ_COLUMNS,
+                },
+            ),
+            Problem::Contact => contact::run(
+                n,
+                scheme,
+                column::Planar::Rz {
+                    columns: RZ_COLUMNS,
+                },
+            ),
             _ => Err(crate::SolverError::BadConfig {
                 field: "geometry",
                 value: 0.0,
-                reason: "this problem has no axisymmetric (RZ) form (sedov-3d, noh-spherical and taylor have)",
+                reason: "this problem has no axisymmetric (RZ) form (noh-planar, sedov-3d, noh-spherical and taylor have)",
             }),
         }
     }
@@ -243,9 +263,9 @@ impl Problem {
             Problem::Sedov2d => sedov::run_2d(n, scheme),
             Problem::Sedov3d => sedov::run_3d(n, scheme),
             Problem::ElasticBar => elastic_bar::run(n, scheme),
-            Problem::HelImpact => hel_impact::run(n, scheme),
+            Problem::HelImpact => hel_impact::run(n, scheme, column::Planar::OneD),
             Problem::Spin => spin::run(n, scheme),
-            Problem::Contact => contact::run(n, scheme),
+            Problem::Contact => contact::run(n, scheme, column::Planar::OneD),
             Problem::Plate => plate::run(n, scheme),
             Problem::Rings => rings::run(n, scheme),
             Problem::Taylor => taylor::run(n, scheme),

@@ -21,19 +21,29 @@ pub(crate) struct Radial {
 impl Radial {
     /// Collects the radial profile about the origin.
     pub fn of<D: Dimension, K: Kernel>(sim: &Simulation<D, K>) -> Self {
+        Self::with(sim, |x, v| {
+            let r = x.norm();
+            (r, if r > 0.0 { v.dot(x) / r } else { 0.0 })
+        })
+    }
+
+    /// The profile along coordinate `axis` (a planar problem run in more dimensions):
+    /// "r" is that coordinate and "v_r" that velocity component.
+    pub fn along<D: Dimension, K: Kernel>(sim: &Simulation<D, K>, axis: usize) -> Self {
+        Self::with(sim, |x, v| (x.component(axis), v.component(axis)))
+    }
+
+    /// The profile with (r, v_r) of each particle from `coord(x, v)`.
+    fn with<D: Dimension, K: Kernel>(
+        sim: &Simulation<D, K>,
+        coord: impl Fn(D::Vector, D::Vector) -> (f64, f64),
+    ) -> Self {
         let (pr, _) = sim.pressure_and_sound_speed();
         let pa = &sim.state.particles;
         let mut idx: Vec<usize> = (0..pa.len()).collect();
-        let r_of = |i: usize| pa.position[i].norm();
+        let r_of = |i: usize| coord(pa.position[i], pa.velocity[i]).0;
         idx.sort_by(|&a, &b| r_of(a).total_cmp(&r_of(b)));
-        let vr = |i: usize| {
-            let r = r_of(i);
-            if r > 0.0 {
-                pa.velocity[i].dot(pa.position[i]) / r
-            } else {
-                0.0
-            }
-        };
+        let vr = |i: usize| coord(pa.position[i], pa.velocity[i]).1;
         Radial {
             r: idx.iter().map(|&i| r_of(i)).collect(),
             rho: idx.iter().map(|&i| pa.density[i]).collect(),

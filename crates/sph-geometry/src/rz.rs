@@ -1,0 +1,304 @@
+//! Particle placement for axisymmetric (RZ) runs: 2-D particles in the meridional
+//! half-plane (x = r > 0, y = z), each standing for a ring about the z axis.
+//!
+//! The body is a 3-D [`Shape`] that is symmetric about the z axis; a point (r, z) of the
+//! half-plane is inside when (r, 0, z) is. Each particle's mass is its **ring mass per
+//! radian**, m = ρ ∫ r dA over the part of the half-plane it represents (kg/rad), so
+//! 2π Σ m is the body's mass; its spacing is the local Δ (m). The returned
+//! [`BodyParticles`] keep the 3-D meaning of the totals: `volume` and `exact_volume` are
+//! the body's 3-D volume (m³), `raw_mass_error` is 2π Σ m/(ρV) − 1, and
+//! `lattice_equivalent_count` is the meridional section's area over Δ_min², the count of
+//! a uniform RZ lattice at the finest spacing (the area estimated as Σ m/(ρ r)).
+//!
+//! * [`rz_lattice`]: a square lattice, r = (a + ½)Δ, z on the layers of
+//!   [`cubic_lattice`](crate::cubic_lattice), mass ρΔ²r (the exact ring mass of its cell).
+//! * [`RzLayeredPlacement`]: the 2-D analogue of the variable-resolution Fibonacci layers
+//!   (paper §4): half-circular layers about an origin on the axis, each one spacing thick,
+//!   the spacing growing by q per layer; each particle carries the exact ring mass of its
+//!   annular sector.
+//!
+//! Masses are not rescaled: a particle next to the surface carries its whole cell or
+//! sector, so Σ m differs from ρV/2π by the raw error (a boundary effect, of either sign).
+
+use crate::error::{GeometryError, MAX_CANDIDATE_POINTS, positive_finite};
+use crate::fibonacci::{Shell, shells};
+use crate::placement::BodyParticles;
+use crate::shape::{Aabb, Shape};
+use rayon::prelude::*;
+use sph_core::glam::{DVec2, DVec3};
+use std::f64::consts::{PI, TAU};
+
+/// The (r, z) box of the meridional section of a 3-D box: r from 0 to the farthest
+/// corner's distance from the axis, z as the box.
+fn section_bounds(b: &Aabb<DVec3>) -> (f64, f64, f64) {
+    let rx = b.min.x.abs().max(b.max.x.abs());
+    let ry = b.min.y.abs().max(b.max.y.abs());
+    ((rx * rx + ry * ry).sqrt(), b.min.z, b.max.z)
+}
+
+/// The 3-D point of (r, z) in the half-plane y = 0.
+#[inline]
+fn point3(p: DVec2) -> DVec3 {
+    DVec3::new(p.x, 0.0, p.y)
+}
+
+fn bounded<S: Shape<DVec3> + ?Sized>(
+    shape: &S,
+    operation: &'static str,
+) -> Result<Aabb<DVec3>, GeometryError> {
+    shape.bounds().ok_or_else(|| GeometryError::Unbounded {
+        body: shape.describe(),
+        operation,
+    })
+}
+
+/// The totals of an RZ placement from its ring masses per radian.
+fn finish<S: Shape<DVec3> + ?Sized>(
+    shape: &S,
+    positions: Vec<DVec2>,
+    masses: Vec<f64>,
+    spacing: Vec<f64>,
+    density: f64,
+    min_spacing: f64,
+) -> BodyParticles<DVec2> {
+    let raw_total = TAU * masses.iter().sum::<f64>();
+    let exact_volume = shape.volume();
+    let volume = exact_volume.unwrap_or(raw_total / density);
+    let area: f64 = positions
+        .iter()
+        .zip(&masses)
+        .map(|(p, m)| m / (density * p.x))
+        .sum();
+    BodyParticles {
+        body: shape.describe(),
+        raw_mass_error: exact_volume.map(|v| raw_total / (density * v) - 1.0),
+        lattice_equivalent_count: area / (min_spacing * min_spacing),
+        positions,
+        masses,
+        spacing,
+        density,
+        exact_volume,
+        volume,
+    }
+}
+
+/// Fills the meridional section of an axisymmetric 3-D `shape` with a square lattice of
+/// spacing `spacing` (m): r = (a + ½)Δ, a = 0, 1, …, and z on the layers
+/// [`cubic_lattice`](crate::cubic_lattice) uses for the same shape (centred on its
+/// bounds, cell-centred), so a 3-D and an RZ lattice share their top layer. A site is
+/// kept when (r, 0, z) is inside; its mass is the ring mass per radian of its cell,
+/// ρΔ²r (kg/rad), for mass density `density` (kg/m³).
+pub fn rz_lattice<S: Shape<DVec3> + ?Sized>(
+    shape: &S,
+    spacing: f64,
+    density: f64,
+) -> Result<BodyParticles<DVec2>, GeometryError> {
+    let a = positive_finite("rz_lattice(spacing)", spacing)?;
+    positive_finite("rz_lattice(density)", density)?;
+    let bounds = bounded(shape, "RZ lattice")?;
+    let (r_max, z_min, z_max) = section_bounds(&bounds);
+    let nr = ((r_max / a - 1e-9).ceil().max(1.0)) as usize;
+    let nz = (((z_max - z_min) / a - 1e-9).ceil().max(1.0)) as usize;
+    let candidates = nr as f64 * nz as f64;
+    if candidates > MAX_CANDIDATE_POINTS {
+        return Err(GeometryError::TooManyPoints {
+            body: shape.describe(),
+            operation: "RZ lattice",
+            estimate: candidates,
+            limit: MAX_CANDIDATE_POINTS,
+        });
+    }
+    let zc = 0.5 * (z_min + z_max);
+    let positions: Vec<DVec2> = (0..nr * nz)
+        .into_par_iter()
+        .map(|lin| {
+            let (i, j) = (lin % nr, lin / nr);
+            DVec2::new(
+                (i as f64 + 0.5) * a,
+                zc + (j as f64 - 0.5 * (nz - 1) as f64) * a,
+            )
+        })
+        .filter(|&p| shape.contains(point3(p)))
+        .collect();
+    if positions.is_empty() {
+        return Err(GeometryError::EmptyPlacement {
+            body: shape.describe(),
+            reason: format!(
+                "no site of the RZ lattice with spacing {a} m lies inside it (section r ≤ {r_max}, \
+                 {z_min} ≤ z ≤ {z_max}); use a smaller spacing"
+            ),
+        });
+    }
+    let masses = positions.iter().map(|p| density * a * a * p.x).collect();
+    let n = positions.len();
+    Ok(finish(shape, positions, masses, vec![a; n], density, a))
+}
+
+/// The 2-D (meridional) analogue of the study's variable-resolution layers (paper §4;
+/// [`FibonacciPlacement`](crate::FibonacciPlacement) in 3-D).
+///
+/// About an origin on the axis, (0, origin_z), layer k has spacing Δ_k = A_res q^k and
+/// owns the half-annulus b_(k−1) ≤ R ≤ b_k of the half-plane r ≥ 0, with the same radii as
+/// the 3-D layers ([`shells`]: b_k = Σ_(i≤k) Δ_i, points at the mid radius R_k). Its n_k
+/// points sit at the polar angles θ_j = (j + ½)π/n_k (θ from +z), at
+/// r = R_k sin θ_j > 0, z = origin_z + R_k cos θ_j, and own the annular sectors
+/// [jπ/n_k, (j+1)π/n_k]. Only points inside the body are kept, each with the exact ring
+/// mass per radian of its sector, ρ (b_k³ − b_(k−1)³)/3 · (cos θ_a − cos θ_b).
+///
+/// **Point count.** n_k is the even number nearest π R_k/Δ_k (at least 2), so the arc
+/// spacing is Δ_k up to rounding. Even rather than just nearest: then θ = π/2 is a sector
+/// boundary in every layer, so the plane z = origin_z (the target's top face when the
+/// origin is the impact point, a sphere's equator when it is the centre) is tiled exactly,
+/// and no particle sits on it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RzLayeredPlacement {
+    origin_z: f64,
+    first_spacing: f64,
+    ratio: f64,
+    density: f64,
+}
+
+/// n_k: the even number nearest π R/Δ, at least 2.
+pub fn rz_layer_point_count(radius: f64, spacing: f64) -> usize {
+    2 * ((0.5 * PI * radius / spacing).round() as usize).max(1)
+}
+
+impl RzLayeredPlacement {
+    /// A placement about (r, z) = (0, `origin_z`) (m, finite) with first-layer spacing
+    /// `first_spacing` (A_res > 0, m), ratio `ratio` (q ≥ 1, finite; 1 is uniform) and
+    /// mass density `density` (> 0, kg/m³).
+    pub fn new(
+        origin_z: f64,
+        first_spacing: f64,
+        ratio: f64,
+        density: f64,
+    ) -> Result<Self, GeometryError> {
+        if !origin_z.is_finite() {
+            return Err(GeometryError::InvalidParameter {
+                field: "RzLayeredPlacement.origin_z",
+                value: origin_z,
+                requirement: "must be finite",
+            });
+        }
+        if !(ratio >= 1.0 && ratio.is_finite()) {
+            return Err(GeometryError::InvalidParameter {
+                field: "RzLayeredPlacement.ratio (q)",
+                value: ratio,
+                requirement: "must be finite and at least 1",
+            });
+        }
+        Ok(Self {
+            origin_z,
+            first_spacing: positive_finite(
+                "RzLayeredPlacement.first_spacing (A_res)",
+                first_spacing,
+            )?,
+            ratio,
+            density: positive_finite("RzLayeredPlacement.density", density)?,
+        })
+    }
+
+    /// The origin's z (m).
+    pub fn origin_z(&self) -> f64 {
+        self.origin_z
+    }
+    /// A_res (m).
+    pub fn first_spacing(&self) -> f64 {
+        self.first_spacing
+    }
+    /// q.
+    pub fn ratio(&self) -> f64 {
+        self.ratio
+    }
+    /// ρ (kg/m³).
+    pub fn density(&self) -> f64 {
+        self.density
+    }
+
+    /// The layers that can touch a body with 3-D bounds `bounds`.
+    fn layers(&self, bounds: &Aabb<DVec3>) -> Result<Vec<Shell>, GeometryError> {
+        let (r_max, z_min, z_max) = section_bounds(bounds);
+        let dz_far = (z_min - self.origin_z)
+            .abs()
+            .max((z_max - self.origin_z).abs());
+        let reach = (r_max * r_max + dz_far * dz_far).sqrt();
+        let near = (z_min - self.origin_z).max(self.origin_z - z_max).max(0.0);
+        Ok(shells(self.first_spacing, self.ratio, reach)?
+            .into_iter()
+            .filter(|s| s.outer >= near)
+            .collect())
+    }
+
+    /// Fills the meridional section of the axisymmetric 3-D `shape` with particles.
+    pub fn place<S: Shape<DVec3> + ?Sized>(
+        &self,
+        shape: &S,
+    ) -> Result<BodyParticles<DVec2>, GeometryError> {
+        let bounds = bounded(shape, "RZ layered placement")?;
+        let layers = self.layers(&bounds)?;
+        let candidates: f64 = layers
+            .iter()
+            .map(|s| rz_layer_point_count(s.radius, s.spacing) as f64)
+            .sum();
+        if candidates > MAX_CANDIDATE_POINTS {
+            return Err(GeometryError::TooManyPoints {
+                body: shape.describe(),
+                operation: "RZ layered placement",
+                estimate: candidates,
+                limit: MAX_CANDIDATE_POINTS,
+            });
+        }
+        let per_layer: Vec<Vec<(DVec2, f64, f64)>> =
+            layers.par_iter().map(|s| self.layer(s, shape)).collect();
+        let n: usize = per_layer.iter().map(Vec::len).sum();
+        if n == 0 {
+            return Err(GeometryError::EmptyPlacement {
+                body: shape.describe(),
+                reason: format!(
+                    "no point of the {} RZ layers about z = {} m (A_res {} m, q {}) lies inside it",
+                    layers.len(),
+                    self.origin_z,
+                    self.first_spacing,
+                    self.ratio
+                ),
+            });
+        }
+        let (mut positions, mut masses, mut spacing) = (
+            Vec::with_capacity(n),
+            Vec::with_capacity(n),
+            Vec::with_capacity(n),
+        );
+        for (p, m, d) in per_layer.into_iter().flatten() {
+            positions.push(p);
+            masses.push(m);
+            spacing.push(d);
+        }
+        Ok(finish(
+            shape,
+            positions,
+            masses,
+            spacing,
+            self.density,
+            self.first_spacing,
+        ))
+    }
+
+    /// The kept points of one layer: position, ring mass per radian, spacing.
+    fn layer<S: Shape<DVec3> + ?Sized>(&self, s: &Shell, shape: &S) -> Vec<(DVec2, f64, f64)> {
+        let n = rz_layer_point_count(s.radius, s.spacing);
+        let radial = self.density * (s.outer.powi(3) - s.inner.powi(3)) / 3.0;
+        let dt = PI / n as f64;
+        (0..n)
+            .filter_map(|j| {
+                let theta = (j as f64 + 0.5) * dt;
+                let p = DVec2::new(
+                    s.radius * theta.sin(),
+                    self.origin_z + s.radius * theta.cos(),
+                );
+                let (a, b) = (j as f64 * dt, (j + 1) as f64 * dt);
+                (p.x > 0.0 && shape.contains(point3(p)))
+                    .then(|| (p, radial * (a.cos() - b.cos()), s.spacing))
+            })
+            .collect()
+    }
+}

@@ -1,0 +1,171 @@
+//! The stepping loop of a run, the same for 3-D and RZ: snapshots (VTU, PVD, crater) at
+//! every interval, β and totals into `history.csv`, the progress line; then the final
+//! diagnostics ([`super::finish`]).
+
+use crate::Simulation;
+use crate::run::arrays::Arrays;
+use crate::run::error::RunError;
+use crate::run::history::{History, HistoryRow};
+use crate::run::measure::{BetaMeasure, Measurer};
+use crate::run::progress::Progress;
+use crate::run::summary::{RunSummary, Totals};
+use crate::run::{RunOptions, finish, snapshot};
+use crate::scene::{BodyInfo, Scene, SceneDimension};
+use sph_diagnostics::Pvd;
+use sph_kernel::KernelChoice;
+use std::path::Path;
+use std::time::Instant;
+
+/// One run: the scene, where it writes, and how.
+pub(crate) struct Job<'a> {
+    pub scene: &'a Scene,
+    pub dir: &'a Path,
+    pub options: &'a RunOptions,
+    /// Simulated end time (s).
+    pub end_time: f64,
+    pub threads: usize,
+    /// When the run started (set-up included).
+    pub wall: Instant,
+}
+
+/// What the loop hands to the final diagnostics.
+pub(crate) struct Stepped<D: SceneDimension> {
+    pub sim: Simulation<D, KernelChoice>,
+    pub bodies: Vec<BodyInfo>,
+    pub measurer: Measurer,
+    pub history: History,
+    pub initial: Totals,
+    pub steps: u64,
+    /// Wall time of the stepping alone (s).
+    pub stepping: f64,
+}
+
+impl Job<'_> {
+    /// Steps `sim` (built from the scene, with its `bodies`) to the end time, writing the
+    /// outputs, and returns the summary.
+    pub fn run<D: SceneDimension>(
+        &self,
+        mut sim: Simulation<D, KernelChoice>,
+        bodies: Vec<BodyInfo>,
+    ) -> Result<RunSummary, RunError> {
+        let (scene, dir, end_time) = (self.scene, self.dir, self.end_time);
+        let setup = scene
+            .diagnostic_setup(self.options.resolution_scale)
+            .map_err(|e| scene.locate(e))?;
+        let mut measurer = Measurer {
+            targets: setup.targets.iter().map(|&t| t as u16).collect(),
+            projectile_mass: bodies[setup.projectile].mass,
+            initial_target_momentum_z: bodies
+                .iter()
+                .enumerate()
+                .filter(|(k, _)| *k != setup.projectile)
+                .map(|(_, b)| b.mass * b.velocity[2])
+                .sum(),
+            setup,
+            geometry: D::KIND,
+            top_offset: 0.0,
+        };
+        measurer.calibrate(&Arrays::of(&sim))?;
+        let n = sim.state.particles.len();
+        let interval = scene.output.interval(end_time);
+        let history_every = scene.output.history_every.unwrap_or(1);
+        let initial = Totals::of(&sim);
+        let mut history = History::create(&dir.join("history.csv"))?;
+        let mut pvd = Pvd::new();
+        let mut progress = Progress::new(self.options.quiet, end_time, n);
+
+        let mut snapshot_index = 0;
+        let mut crater = (f64::NAN, f64::NAN);
+        let mut take_snapshot = |sim: &Simulation<D, KernelChoice>,
+                                 history: &mut History,
+                                 dt: f64,
+                                 crater: &mut (f64, f64)|
+         -> Result<(), RunError> {
+            let a = Arrays::of(sim);
+            let (pressure, _) = sim.pressure_and_sound_speed();
+            snapshot::write_snapshot(sim, &a, &pressure, dir, snapshot_index, &mut pvd)?;
+            snapshot_index += 1;
+            if let Some(c) = measurer.crater(&a)? {
+                *crater = (c.depth, c.diameter);
+            }
+            history.push(row(sim, &measurer.beta(&a)?, *crater, dt, true))?;
+            Ok(())
+        };
+        take_snapshot(&sim, &mut history, 0.0, &mut crater)?;
+        let mut next_snapshot = interval.min(end_time);
+        let t_step = Instant::now();
+        let mut steps: u64 = 0;
+        let tol = 1e-12 * end_time;
+        let failed = |sim: &Simulation<D, KernelChoice>, e: crate::SolverError| RunError::Solver {
+            time: sim.state.time,
+            step: sim.state.step,
+            message: e.to_string(),
+        };
+        while sim.state.time < end_time - tol {
+            let target = next_snapshot.min(end_time);
+            let info = match sim.step(target - sim.state.time) {
+                Ok(info) => info,
+                Err(e) => return Err(failed(&sim, e)),
+            };
+            steps += 1;
+            let at_snapshot = sim.state.time >= next_snapshot - tol;
+            let at_end = sim.state.time >= end_time - tol;
+            if at_end {
+                // Summation density is recomputed from the final positions for output.
+                if let Err(e) = sim.sync_density() {
+                    return Err(failed(&sim, e));
+                }
+            }
+            if at_snapshot || at_end {
+                take_snapshot(&sim, &mut history, info.dt, &mut crater)?;
+                while next_snapshot <= sim.state.time + tol {
+                    next_snapshot += interval;
+                }
+            } else if steps.is_multiple_of(history_every) {
+                let a = Arrays::of(&sim);
+                history.push(row(&sim, &measurer.beta(&a)?, crater, info.dt, false))?;
+            }
+            progress.update(sim.state.time, steps, false);
+        }
+        let stepping = t_step.elapsed().as_secs_f64();
+        progress.finish(sim.state.time, steps);
+        history.flush()?;
+        finish::summarise(
+            self,
+            Stepped {
+                sim,
+                bodies,
+                measurer,
+                history,
+                initial,
+                steps,
+                stepping,
+            },
+        )
+    }
+}
+
+/// A history row of the current state (totals of the whole bodies).
+fn row<D: SceneDimension>(
+    sim: &Simulation<D, KernelChoice>,
+    beta: &BetaMeasure,
+    crater: (f64, f64),
+    dt: f64,
+    crater_measured: bool,
+) -> HistoryRow {
+    let c = Totals::of(sim);
+    HistoryRow {
+        t: sim.state.time,
+        step: sim.state.step,
+        dt,
+        beta: beta.beta,
+        beta_target: beta.beta_target,
+        ejecta_mass: beta.ejecta_mass,
+        crater_depth: crater.0,
+        crater_diameter: crater.1,
+        kinetic: c.kinetic,
+        internal: c.internal,
+        momentum_z: c.momentum[2],
+        crater_measured,
+    }
+}

@@ -1,0 +1,139 @@
+//! The end of a run: the final crater, β, ejecta distribution, damage and projectile
+//! melt, the plots, and `summary.json`.
+
+use crate::run::arrays::Arrays;
+use crate::run::drive::{Job, Stepped};
+use crate::run::error::RunError;
+use crate::run::plots;
+use crate::run::summary::{BodyDamageSummary, RunSummary, Totals};
+use crate::scene::SceneDimension;
+use sph_diagnostics::{
+    FULLY_DAMAGED, damage_stats, ejecta_distribution, energy_histogram, phase_fractions,
+    uniform_edges,
+};
+
+/// Measures the final state, draws the plots, writes `summary.json` and returns it.
+pub(crate) fn summarise<D: SceneDimension>(
+    job: &Job<'_>,
+    run: Stepped<D>,
+) -> Result<RunSummary, RunError> {
+    let Stepped {
+        sim,
+        bodies,
+        measurer,
+        history,
+        initial,
+        steps,
+        stepping,
+    } = run;
+    let (dir, setup) = (job.dir, &measurer.setup);
+    let n = sim.state.particles.len();
+    let a = Arrays::of(&sim);
+    let view = a.view();
+    let beta = measurer.beta(&a)?;
+    let final_crater = measurer.crater(&a)?;
+    let ejecta_bins = if measurer.active() {
+        ejecta_distribution(
+            &view,
+            &measurer.criterion(),
+            setup.impact_speed,
+            setup.ejecta_bin,
+        )?
+    } else {
+        Vec::new()
+    };
+    let damage = damage_stats(&view, FULLY_DAMAGED, 20)?
+        .iter()
+        .map(|d| BodyDamageSummary::of(d, &bodies))
+        .collect();
+    let projectile = setup.projectile as u16;
+    let thermal = sim.materials[setup.projectile].thermal;
+    let phase = match &thermal {
+        Some(t) => Some(phase_fractions(
+            &view,
+            &[projectile],
+            &a.specific_energy,
+            &sph_diagnostics::PhaseThresholds {
+                incipient_melting: t.incipient_melting_energy(),
+                complete_melting: t.complete_melting_energy(),
+                incipient_vaporisation: t.incipient_vaporisation_energy(),
+                complete_vaporisation: t.complete_vaporisation_energy(),
+            },
+        )?),
+        None => None,
+    };
+    let e_proj: Vec<f64> = (0..n)
+        .filter(|&i| a.body[i] == projectile)
+        .map(|i| a.specific_energy[i])
+        .collect();
+    let e_hi = e_proj
+        .iter()
+        .copied()
+        .fold(0.0f64, f64::max)
+        .max(thermal.map_or(0.0, |t| t.complete_vaporisation_energy() * 1.05))
+        .max(1.0);
+    let e_lo = e_proj.iter().copied().fold(0.0f64, f64::min);
+    let e_hist = energy_histogram(
+        &view,
+        &[projectile],
+        &a.specific_energy,
+        uniform_edges(e_lo, e_hi, 60)?,
+    )?;
+
+    let plot = |name: &str| dir.join(name);
+    plots::cross_section(
+        &a,
+        &sim.state.spacing0,
+        setup.surface_z,
+        projectile,
+        D::KIND,
+        &plot("crater_section.png"),
+    )?;
+    plots::histories(&history.rows, &plot("history.png"))?;
+    plots::ejecta(&ejecta_bins, &plot("ejecta.png"))?;
+    plots::projectile_energy(&e_hist, thermal.as_ref(), &plot("projectile_energy.png"))?;
+
+    let last = Totals::of(&sim);
+    let c = final_crater.unwrap_or_default();
+    let active = |x: f64| if measurer.active() { x } else { f64::NAN };
+    let mut summary = RunSummary {
+        geometry: D::KIND,
+        crater_diameter_m: active(c.diameter),
+        bowl_diameter_m: active(c.bowl_diameter),
+        crater_depth_m: active(c.depth),
+        rim_height_m: active(c.rim_height),
+        beta: f64::NAN,
+        beta_target: f64::NAN,
+        ejecta_mass_kg: 0.0,
+        ejecta_momentum_z_kg_m_s: 0.0,
+        projectile_mass_kg: measurer.projectile_mass,
+        impact_speed_m_s: setup.impact_speed,
+        particles: n,
+        steps,
+        end_time_s: job.end_time,
+        wall_time_s: 0.0,
+        particle_steps_per_s: steps as f64 * n as f64 / stepping.max(1e-12),
+        threads: job.threads,
+        resolution_scale: job.options.resolution_scale,
+        version: env!("CARGO_PKG_VERSION").to_owned(),
+        scene: serde_json::to_value(job.scene)
+            .map_err(|e| RunError::Diagnostics(format!("scene as JSON: {e}")))?,
+        scheme: sim.scheme.clone(),
+        bodies,
+        damage,
+        projectile_phase_fractions: phase,
+        ejecta_distribution: ejecta_bins,
+        crater_profile: (c.profile.radius.clone(), c.profile.depth.clone()),
+        initial,
+        last,
+        energy_error: last.energy() / initial.energy() - 1.0,
+        timings: sim.timings,
+        damage_events: sim.damage_events,
+    };
+    summary.set_beta(&beta);
+    summary.wall_time_s = job.wall.elapsed().as_secs_f64();
+    let path = dir.join("summary.json");
+    let text = serde_json::to_string_pretty(&summary).map_err(|e| RunError::io(&path, e))?;
+    std::fs::write(&path, text).map_err(|e| RunError::io(&path, e))?;
+    Ok(summary)
+}
