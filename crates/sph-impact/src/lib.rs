@@ -8,8 +8,8 @@
 //! **Status:** fluids and solids in 1-D, 2-D (plane strain) and 3-D: any
 //! `EquationOfState`, deviatoric stress with a `StrengthModel` (Jaumann rate, radial
 //! return), damage with a `DamageModel` (damaged pressure, (1 − D)S, b_ij in v*), artificial
-//! stress (pressure or tensor form), held particles. The axisymmetric (RZ) geometry
-//! follows.
+//! stress (pressure or tensor form), held particles; and axisymmetric (RZ) 2-D runs of
+//! rings about the z axis ([`Geometry::Axisymmetric`], `solver/axisymmetric.rs`).
 //!
 //! Impact runs: [`scene`] reads a TOML scene (or builds one in Rust) and turns it into a
 //! [`Simulation`]; [`run`] steps it to the end time and writes snapshots, history, summary
