@@ -82,6 +82,36 @@ pub enum GeometryError {
 /// a mistyped spacing (millimetres given as metres) from exhausting memory.
 pub const MAX_CANDIDATE_POINTS: f64 = 4.0e9;
 
+/// The shape's bounds, or [`GeometryError::Unbounded`] for `operation` (a lattice or
+/// placement must know where to stop).
+pub(crate) fn bounds_of<V: Vector, S: crate::Shape<V> + ?Sized>(
+    shape: &S,
+    operation: &'static str,
+) -> Result<crate::Aabb<V>, GeometryError> {
+    shape.bounds().ok_or_else(|| GeometryError::Unbounded {
+        body: shape.describe(),
+        operation,
+    })
+}
+
+/// [`GeometryError::TooManyPoints`] when `operation` would test more than
+/// [`MAX_CANDIDATE_POINTS`] candidates for `shape`.
+pub(crate) fn check_candidates<V: Vector, S: crate::Shape<V> + ?Sized>(
+    shape: &S,
+    operation: &'static str,
+    candidates: f64,
+) -> Result<(), GeometryError> {
+    if candidates > MAX_CANDIDATE_POINTS {
+        return Err(GeometryError::TooManyPoints {
+            body: shape.describe(),
+            operation,
+            estimate: candidates,
+            limit: MAX_CANDIDATE_POINTS,
+        });
+    }
+    Ok(())
+}
+
 /// `value` if it is positive and finite, else [`GeometryError::InvalidParameter`].
 pub(crate) fn positive_finite(field: &'static str, value: f64) -> Result<f64, GeometryError> {
     if value > 0.0 && value.is_finite() {

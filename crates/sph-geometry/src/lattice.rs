@@ -8,7 +8,7 @@
 //! sites (a box whose edges are multiples of Δx holds exactly edge/Δx sites per edge);
 //! the hexagonal and HCP lattices put a site at the centre of the bounds.
 
-use crate::error::{GeometryError, MAX_CANDIDATE_POINTS, positive_finite};
+use crate::error::{GeometryError, bounds_of, check_candidates, positive_finite};
 use crate::placement::BodyParticles;
 use crate::shape::{Aabb, Shape, format_point};
 use rayon::prelude::*;
@@ -46,7 +46,7 @@ pub fn cubic_lattice<V: Vector, S: Shape<V> + ?Sized>(
         .map(|k| ((bounds.extent().component(k) / a - 1e-9).ceil().max(1.0)) as usize)
         .collect();
     let total: f64 = counts.iter().map(|&n| n as f64).product();
-    guard(shape, "cubic lattice", total)?;
+    check_candidates(shape, "cubic lattice", total)?;
     let centre = bounds.centre();
     let site = |mut lin: usize| {
         V::from_fn(|k| {
@@ -84,7 +84,7 @@ pub fn hexagonal_lattice<S: Shape<DVec2> + ?Sized>(
     let ni = (half.x / a).ceil() as i64 + 1;
     let nj = (half.y / dy).ceil() as i64 + 1;
     let (wi, wj) = (2 * ni + 1, 2 * nj + 1);
-    guard(shape, "hexagonal lattice", (wi * wj) as f64)?;
+    check_candidates(shape, "hexagonal lattice", (wi * wj) as f64)?;
     let centre = bounds.centre();
     let positions: Vec<DVec2> = (0..wi * wj)
         .into_par_iter()
@@ -122,7 +122,7 @@ pub fn hcp_lattice<S: Shape<DVec3> + ?Sized>(
     let nj = (half.y / dy).ceil() as i64 + 2;
     let nl = (half.z / dz).ceil() as i64 + 1;
     let (wi, wj, wl) = (2 * ni + 1, 2 * nj + 1, 2 * nl + 1);
-    guard(shape, "HCP lattice", (wi * wj * wl) as f64)?;
+    check_candidates(shape, "HCP lattice", (wi * wj * wl) as f64)?;
     let centre = bounds.centre();
     let b_shift = DVec2::new(0.5 * a, a / (2.0 * 3f64.sqrt()));
     let positions: Vec<DVec3> = (0..wi * wj * wl)
@@ -165,27 +165,7 @@ fn check<V: Vector, S: Shape<V> + ?Sized>(
 ) -> Result<(f64, Aabb<V>), GeometryError> {
     let a = positive_finite("lattice spacing", spacing)?;
     positive_finite("lattice density", density)?;
-    let bounds = shape.bounds().ok_or_else(|| GeometryError::Unbounded {
-        body: shape.describe(),
-        operation,
-    })?;
-    Ok((a, bounds))
-}
-
-fn guard<V: Vector, S: Shape<V> + ?Sized>(
-    shape: &S,
-    operation: &'static str,
-    candidates: f64,
-) -> Result<(), GeometryError> {
-    if candidates > MAX_CANDIDATE_POINTS {
-        return Err(GeometryError::TooManyPoints {
-            body: shape.describe(),
-            operation,
-            estimate: candidates,
-            limit: MAX_CANDIDATE_POINTS,
-        });
-    }
-    Ok(())
+    Ok((a, bounds_of(shape, operation)?))
 }
 
 /// Assigns the uniform site mass and the totals. When the exact volume is unknown the

@@ -20,7 +20,7 @@
 //! Masses are not rescaled: a particle next to the surface carries its whole cell or
 //! sector, so Σ m differs from ρV/2π by the raw error (a boundary effect, of either sign).
 
-use crate::error::{GeometryError, MAX_CANDIDATE_POINTS, positive_finite};
+use crate::error::{GeometryError, bounds_of, check_candidates, positive_finite};
 use crate::fibonacci::{Shell, shells};
 use crate::placement::BodyParticles;
 use crate::shape::{Aabb, Shape};
@@ -40,16 +40,6 @@ fn section_bounds(b: &Aabb<DVec3>) -> (f64, f64, f64) {
 #[inline]
 fn point3(p: DVec2) -> DVec3 {
     DVec3::new(p.x, 0.0, p.y)
-}
-
-fn bounded<S: Shape<DVec3> + ?Sized>(
-    shape: &S,
-    operation: &'static str,
-) -> Result<Aabb<DVec3>, GeometryError> {
-    shape.bounds().ok_or_else(|| GeometryError::Unbounded {
-        body: shape.describe(),
-        operation,
-    })
 }
 
 /// The totals of an RZ placement from its ring masses per radian.
@@ -95,19 +85,12 @@ pub fn rz_lattice<S: Shape<DVec3> + ?Sized>(
 ) -> Result<BodyParticles<DVec2>, GeometryError> {
     let a = positive_finite("rz_lattice(spacing)", spacing)?;
     positive_finite("rz_lattice(density)", density)?;
-    let bounds = bounded(shape, "RZ lattice")?;
+    let bounds = bounds_of(shape, "RZ lattice")?;
     let (r_max, z_min, z_max) = section_bounds(&bounds);
     let nr = ((r_max / a - 1e-9).ceil().max(1.0)) as usize;
     let nz = (((z_max - z_min) / a - 1e-9).ceil().max(1.0)) as usize;
     let candidates = nr as f64 * nz as f64;
-    if candidates > MAX_CANDIDATE_POINTS {
-        return Err(GeometryError::TooManyPoints {
-            body: shape.describe(),
-            operation: "RZ lattice",
-            estimate: candidates,
-            limit: MAX_CANDIDATE_POINTS,
-        });
-    }
+    check_candidates(shape, "RZ lattice", candidates)?;
     let zc = 0.5 * (z_min + z_max);
     let positions: Vec<DVec2> = (0..nr * nz)
         .into_par_iter()
@@ -234,20 +217,13 @@ impl RzLayeredPlacement {
         &self,
         shape: &S,
     ) -> Result<BodyParticles<DVec2>, GeometryError> {
-        let bounds = bounded(shape, "RZ layered placement")?;
+        let bounds = bounds_of(shape, "RZ layered placement")?;
         let layers = self.layers(&bounds)?;
         let candidates: f64 = layers
             .iter()
             .map(|s| rz_layer_point_count(s.radius, s.spacing) as f64)
             .sum();
-        if candidates > MAX_CANDIDATE_POINTS {
-            return Err(GeometryError::TooManyPoints {
-                body: shape.describe(),
-                operation: "RZ layered placement",
-                estimate: candidates,
-                limit: MAX_CANDIDATE_POINTS,
-            });
-        }
+        check_candidates(shape, "RZ layered placement", candidates)?;
         let per_layer: Vec<Vec<(DVec2, f64, f64)>> =
             layers.par_iter().map(|s| self.layer(s, shape)).collect();
         let n: usize = per_layer.iter().map(Vec::len).sum();

@@ -2,7 +2,7 @@
 //! exact volume), the axis-aligned bounding box [`Aabb`], and [`estimate_volume`] for
 //! shapes whose volume has no closed form.
 
-use crate::error::{GeometryError, MAX_CANDIDATE_POINTS, finite_vector};
+use crate::error::{GeometryError, bounds_of, check_candidates, finite_vector};
 use sph_core::Vector;
 use std::f64::consts::PI;
 use std::sync::Arc;
@@ -181,19 +181,9 @@ pub fn estimate_volume<V: Vector, S: Shape<V> + ?Sized>(
             requirement: "must be at least 1",
         });
     }
-    let bounds = shape.bounds().ok_or_else(|| GeometryError::Unbounded {
-        body: shape.describe(),
-        operation: "estimate_volume",
-    })?;
+    let bounds = bounds_of(shape, "estimate_volume")?;
     let total = (samples_per_axis as f64).powi(V::DIM as i32);
-    if total > MAX_CANDIDATE_POINTS {
-        return Err(GeometryError::TooManyPoints {
-            body: shape.describe(),
-            operation: "estimate_volume",
-            estimate: total,
-            limit: MAX_CANDIDATE_POINTS,
-        });
-    }
+    check_candidates(shape, "estimate_volume", total)?;
     let n = samples_per_axis;
     let cell = bounds.extent() / n as f64;
     let mut inside = 0usize;

@@ -42,7 +42,7 @@ pub use shell_volume::shell_volume_inside;
 pub use shells::{MAX_SHELLS, Shell, shell_point_count, shells};
 pub use sphere_points::{GOLDEN_FRACTION, PoleFrame, fibonacci_direction, fibonacci_sphere};
 
-use crate::error::{GeometryError, MAX_CANDIDATE_POINTS, finite_vector, positive_finite};
+use crate::error::{GeometryError, bounds_of, check_candidates, finite_vector, positive_finite};
 use crate::placement::BodyParticles;
 use crate::shape::{Shape, format_point};
 use assignment::{Credits, LayerProbe};
@@ -174,10 +174,7 @@ impl FibonacciPlacement {
         shape: &S,
     ) -> Result<(BodyParticles<DVec3>, Vec<ShellReport>), GeometryError> {
         let body = shape.describe();
-        let bounds = shape.bounds().ok_or_else(|| GeometryError::Unbounded {
-            body: body.clone(),
-            operation: "variable-resolution placement",
-        })?;
+        let bounds = bounds_of(shape, "variable-resolution placement")?;
         let reach = bounds.farthest_distance(self.origin);
         let near = bounds.nearest_distance(self.origin);
         let layers: Vec<Shell> = shells(self.first_spacing, self.ratio, reach)?
@@ -185,14 +182,7 @@ impl FibonacciPlacement {
             .filter(|s| s.outer >= near)
             .collect();
         let candidates: f64 = layers.iter().map(|s| s.count as f64).sum();
-        if candidates > MAX_CANDIDATE_POINTS {
-            return Err(GeometryError::TooManyPoints {
-                body,
-                operation: "variable-resolution placement",
-                estimate: candidates,
-                limit: MAX_CANDIDATE_POINTS,
-            });
-        }
+        check_candidates(shape, "variable-resolution placement", candidates)?;
 
         let probe = LayerProbe {
             shape,
