@@ -25,8 +25,8 @@ pub use outcome::{Outcome, Panel, Picture, Profile};
 
 use std::str::FromStr;
 
-/// Width of the RZ column (in spacings) that runs a planar problem along the axis.
-const RZ_COLUMNS: usize = 12;
+/// The RZ column that runs a planar problem along the axis: 12 spacings wide.
+const RZ_COLUMN: column::Planar = column::Planar::Rz { columns: 12 };
 
 /// A verification problem.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -201,39 +201,44 @@ impl Problem {
         self.run_with(resolution, self.default_scheme())
     }
 
+    /// The resolution to run at (None: the default), after checking it and the scheme.
+    fn resolve(
+        &self,
+        resolution: Option<usize>,
+        scheme: &crate::SchemeConfig,
+    ) -> Result<usize, crate::SolverError> {
+        scheme.validate()?;
+        let n = resolution.unwrap_or(self.resolution_doc().1);
+        if n < 4 {
+            return Err(crate::SolverError::BadConfig {
+                field: "resolution",
+                value: n as f64,
+                reason: "must be at least 4",
+            });
+        }
+        Ok(n)
+    }
+
     /// Runs the problem in axisymmetric RZ geometry (the problems that have an RZ form:
-    /// `noh-planar` along z, `sedov-3d`, `noh-spherical`, `taylor`), at `resolution`
-    /// with the given scheme.
+    /// `noh-planar`, `hel-impact` and `contact` along the axis of a column of rings,
+    /// `sedov-3d`, `noh-spherical`, `taylor`), at `resolution` with the given scheme.
     pub fn run_rz(
         &self,
         resolution: Option<usize>,
         scheme: crate::SchemeConfig,
     ) -> Result<Outcome, crate::SolverError> {
-        scheme.validate()?;
-        let n = resolution.unwrap_or(self.resolution_doc().1);
+        let n = self.resolve(resolution, &scheme)?;
         match self {
             Problem::Sedov3d => sedov::run_rz(n, scheme),
             Problem::NohSpherical => noh::run_spherical_rz(n, scheme),
             Problem::Taylor => taylor::run_rz(n, scheme),
             Problem::NohPlanar => noh::run_planar_rz(n, scheme),
-            Problem::HelImpact => hel_impact::run(
-                n,
-                scheme,
-                column::Planar::Rz {
-                    columns: RZ_COLUMNS,
-                },
-            ),
-            Problem::Contact => contact::run(
-                n,
-                scheme,
-                column::Planar::Rz {
-                    columns: RZ_COLUMNS,
-                },
-            ),
+            Problem::HelImpact => hel_impact::run(n, scheme, RZ_COLUMN),
+            Problem::Contact => contact::run(n, scheme, RZ_COLUMN),
             _ => Err(crate::SolverError::BadConfig {
                 field: "geometry",
                 value: 0.0,
-                reason: "this problem has no axisymmetric (RZ) form (noh-planar, sedov-3d, noh-spherical and taylor have)",
+                reason: "this problem has no axisymmetric (RZ) form (noh-planar, hel-impact, contact, sedov-3d, noh-spherical and taylor have)",
             }),
         }
     }
@@ -244,15 +249,7 @@ impl Problem {
         resolution: Option<usize>,
         scheme: crate::SchemeConfig,
     ) -> Result<Outcome, crate::SolverError> {
-        scheme.validate()?;
-        let n = resolution.unwrap_or(self.resolution_doc().1);
-        if n < 4 {
-            return Err(crate::SolverError::BadConfig {
-                field: "resolution",
-                value: n as f64,
-                reason: "must be at least 4",
-            });
-        }
+        let n = self.resolve(resolution, &scheme)?;
         match self {
             Problem::Sod => shock_tube::run(shock_tube::Tube::Sod, n, scheme),
             Problem::Toro123 => shock_tube::run(shock_tube::Tube::Toro123, n, scheme),

@@ -13,11 +13,12 @@
 use super::outcome::{Outcome, Panel, Picture, Profile};
 use super::setup::elastic_solid;
 use super::setup::simulation;
-use crate::{Boundary, Material, SchemeConfig, SolverError};
+use crate::{Boundary, Material, SchemeConfig, Simulation, SolverError};
 use sph_core::glam::{DVec2, DVec3};
-use sph_core::{Dim2, Dim3, ParticleInit, Particles};
+use sph_core::{Dim2, Dim3, Dimension, ParticleInit, Particles};
 use sph_eos::LinearElastic;
 use sph_geometry::{Cylinder, cubic_lattice};
+use sph_kernel::KernelChoice;
 use sph_strength::VonMises;
 
 const RHO: f64 = 8930.0;
@@ -77,7 +78,7 @@ pub(crate) fn run(n: usize, scheme: SchemeConfig) -> Result<Outcome, SolverError
         },
     ];
     let count = p.len();
-    let mut sim = simulation(
+    let sim = simulation(
         p,
         vec![Material::solid("copper (bilinear)", eos, strength)],
         scheme,
@@ -85,35 +86,10 @@ pub(crate) fn run(n: usize, scheme: SchemeConfig) -> Result<Outcome, SolverError
         Some(vec![dx; count]),
     )?;
     let anvil = z_min0 - 0.5 * dx;
-    let ke0 = sim.conserved().kinetic;
-    let wall = std::time::Instant::now();
-    let (mut times, mut ke) = (vec![0.0], vec![ke0]);
-    let mut steps = 0;
-    let samples = 80;
-    for k in 1..=samples {
-        steps += sim.run_until(T_END * k as f64 / samples as f64, |_, _| {})?;
-        times.push(sim.state.time);
-        ke.push(sim.conserved().kinetic);
-    }
-    let p = &sim.state.particles;
-    let rz: Vec<[f64; 2]> = p
-        .position
-        .iter()
-        .map(|x| [x.truncate().length(), x.z - anvil])
-        .collect();
     // Quarter model: the full rod's KE0 is four times the quarter's.
-    let run = RodRun {
-        name: "taylor",
-        resolution: n,
-        steps,
-        wall_time_s: wall.elapsed().as_secs_f64(),
-        dx,
-        rz,
-        plastic_strain: sim.state.plastic_strain.clone(),
-        times,
-        kinetic: ke,
-        full_rod_factor: 4.0,
-    };
+    let run = RodRun::simulate("taylor", n, dx, sim, 4.0, |x| {
+        [x.truncate().length(), x.z - anvil]
+    })?;
     Ok(run.outcome())
 }
 
@@ -134,6 +110,44 @@ struct RodRun {
 }
 
 impl RodRun {
+    /// Runs `sim` to the end time, sampling its kinetic energy 80 times, and reads the
+    /// end state as (r, height above the anvil) with `rz`.
+    fn simulate<D: Dimension>(
+        name: &'static str,
+        resolution: usize,
+        dx: f64,
+        mut sim: Simulation<D, KernelChoice>,
+        full_rod_factor: f64,
+        rz: impl Fn(D::Vector) -> [f64; 2],
+    ) -> Result<Self, SolverError> {
+        let wall = std::time::Instant::now();
+        let (mut times, mut kinetic) = (vec![0.0], vec![sim.conserved().kinetic]);
+        let (mut steps, samples) = (0, 80);
+        for k in 1..=samples {
+            steps += sim.run_until(T_END * k as f64 / samples as f64, |_, _| {})?;
+            times.push(sim.state.time);
+            kinetic.push(sim.conserved().kinetic);
+        }
+        Ok(Self {
+            name,
+            resolution,
+            steps,
+            wall_time_s: wall.elapsed().as_secs_f64(),
+            dx,
+            rz: sim
+                .state
+                .particles
+                .position
+                .iter()
+                .map(|&x| rz(x))
+                .collect(),
+            plastic_strain: sim.state.plastic_strain.clone(),
+            times,
+            kinetic,
+            full_rod_factor,
+        })
+    }
+
     /// L_f, R_f, the largest plastic strain and where, the KE history, the picture.
     fn outcome(self) -> Outcome {
         let dx = self.dx;
@@ -244,7 +258,7 @@ pub(crate) fn run_rz(n: usize, mut scheme: SchemeConfig) -> Result<Outcome, Solv
         }
     }
     let count = p.len();
-    let mut sim = simulation(
+    let sim = simulation(
         p,
         vec![Material::solid("copper (bilinear)", eos, strength)],
         scheme,
@@ -254,31 +268,8 @@ pub(crate) fn run_rz(n: usize, mut scheme: SchemeConfig) -> Result<Outcome, Solv
         }],
         Some(vec![dx; count]),
     )?;
-    let wall = std::time::Instant::now();
-    let (mut times, mut ke) = (vec![0.0], vec![sim.conserved().kinetic]);
-    let mut steps = 0;
-    for k in 1..=80 {
-        steps += sim.run_until(T_END * k as f64 / 80.0, |_, _| {})?;
-        times.push(sim.state.time);
-        ke.push(sim.conserved().kinetic);
-    }
-    let run = RodRun {
-        name: "taylor (rz)",
-        resolution: n,
-        steps,
-        wall_time_s: wall.elapsed().as_secs_f64(),
-        dx,
-        rz: sim
-            .state
-            .particles
-            .position
-            .iter()
-            .map(|x| [x.x, x.y])
-            .collect(),
-        plastic_strain: sim.state.plastic_strain.clone(),
-        times,
-        kinetic: ke,
-        full_rod_factor: 2.0 * std::f64::consts::PI,
-    };
+    let run = RodRun::simulate("taylor (rz)", n, dx, sim, 2.0 * std::f64::consts::PI, |x| {
+        [x.x, x.y]
+    })?;
     Ok(run.outcome())
 }
