@@ -9,7 +9,10 @@
 //!   of its last non-empty bin, so an edge is never placed where there are no particles.
 //! * **Diameter** (the experiment's, spall zone included): 2 × the radius of the run of
 //!   bins deeper than `depth_threshold`. Contiguity from the axis keeps isolated dents
-//!   and debris beyond the rim out.
+//!   and debris beyond the rim out. With `spall_damage` set, the run is read from the
+//!   *spall profile*, in which target material damaged above it counts as removed
+//!   ([`CraterOptions::spall_damage`]); the diameter of the removed material alone is
+//!   kept as `diameter_removed`.
 //! * **Depth**: the largest depth inside that run; with no run (no crater), the depth of
 //!   the innermost non-empty bin (below the threshold, possibly negative).
 //! * **Bowl diameter**: 2 × the radius of the run of bins at least `bowl_fraction` × depth
@@ -31,14 +34,20 @@ use serde::{Deserialize, Serialize};
 pub struct Crater {
     /// Crater depth below the original surface (m).
     pub depth: f64,
-    /// Crater diameter including the spall zone (m); 0 if there is no crater.
+    /// Crater diameter including the spall zone (m); 0 if there is no crater. Equal to
+    /// `diameter_removed` without `spall_damage`.
     pub diameter: f64,
+    /// Diameter of the run of bins where material was removed (m), spall still in place
+    /// counting as surface.
+    pub diameter_removed: f64,
     /// Diameter of the central bowl (m); 0 if there is no crater.
     pub bowl_diameter: f64,
     /// Highest raised rim above the original surface (m, ≥ 0).
     pub rim_height: f64,
     /// The depth profile (signed; NaN in empty bins).
     pub profile: CraterProfile,
+    /// The profile with spall counted as removed (`spall_damage` set), else `None`.
+    pub spall_profile: Option<CraterProfile>,
 }
 
 /// Profile and sizes of the crater in `view` (see [`crater_profile`] and
@@ -49,7 +58,37 @@ pub fn crater(
     options: &CraterOptions,
 ) -> Result<Crater, ImpactError> {
     let profile = crater_profile(view, criterion, options)?;
-    Ok(measure_crater(profile, options))
+    let c = measure_crater(profile, options);
+    let Some(spall) = options.spall_damage else {
+        return Ok(c);
+    };
+    let cut = CraterOptions {
+        max_damage: Some(options.max_damage.map_or(spall, |m| m.min(spall))),
+        ..*options
+    };
+    match crater_profile(view, criterion, &cut) {
+        Ok(spall_profile) => Ok(c.with_spall(spall_profile, options)),
+        // Every wall particle is spall (a small, wholly fractured target): the whole
+        // target would be crater, and no diameter can be read; NaN says so.
+        Err(ImpactError::EmptySelection(_)) => Ok(Crater {
+            diameter: f64::NAN,
+            ..c
+        }),
+        Err(e) => Err(e),
+    }
+}
+
+impl Crater {
+    /// The crater with its diameter read from `spall_profile` (the run from the axis of
+    /// bins deeper than the threshold, as for the removed material); depth, bowl and rim
+    /// stay those of the removed material.
+    pub fn with_spall(mut self, spall_profile: CraterProfile, options: &CraterOptions) -> Self {
+        let n = spall_profile.depth.len().min(spall_profile.radius.len());
+        self.diameter = run_from_axis(&spall_profile.depth[..n], |x| x > options.depth_threshold)
+            .map_or(0.0, |last| 2.0 * outer_edge(&spall_profile, last));
+        self.spall_profile = Some(spall_profile);
+        self
+    }
 }
 
 /// Depth, diameter, bowl diameter and rim height of a profile, using the thresholds of
@@ -77,9 +116,11 @@ pub fn measure_crater(profile: CraterProfile, options: &CraterOptions) -> Crater
     Crater {
         depth,
         diameter,
+        diameter_removed: diameter,
         bowl_diameter,
         rim_height: profile.rim_height(),
         profile,
+        spall_profile: None,
     }
 }
 
@@ -152,6 +193,55 @@ mod tests {
             depth: vec![3.0, 3.0, 0.0],
         };
         assert_eq!(measure_crater(p, &opts()).diameter, 2.0);
+    }
+
+    #[test]
+    fn spall_widens_the_diameter_only() {
+        // Removed: bowl 8, 6 deep, then surface. Spall profile: the fractured layer
+        // 3 deep out to bin 4, deeper under the bowl (crushed rock).
+        let c = measure_crater(profile(&[8.0, 6.0, 0.0, 0.5, 0.0, 0.0]), &opts())
+            .with_spall(profile(&[12.0, 10.0, 3.0, 3.0, 3.0, 0.0]), &opts());
+        assert_eq!((c.diameter, c.diameter_removed), (10.0, 4.0));
+        assert_eq!((c.depth, c.bowl_diameter), (8.0, 4.0));
+    }
+
+    #[test]
+    fn fractured_top_layer_counts_in_the_diameter_of_a_view() {
+        use crate::ejecta::EjectaCriterion;
+        use crate::particles_view::ParticleView;
+        // RZ columns 1 m apart, 5 particles deep: a 3 m bowl in the first, surface
+        // beyond; the top two particles of columns 1 and 2 are fully damaged, and so is
+        // the bowl's floor (crushed rock).
+        let mut p = Vec::new();
+        let mut dmg = Vec::new();
+        for (k, top) in [-3.0, 0.0, 0.0, 0.0].into_iter().enumerate() {
+            for j in 0..5 {
+                p.push([k as f64 + 0.5, 0.0, top - j as f64]);
+                dmg.push(if k <= 2 && j < 2 { 1.0 } else { 0.0 });
+            }
+        }
+        let n = p.len();
+        let (v, m, b) = (vec![[0.0; 3]; n], vec![1.0; n], vec![1u16; n]);
+        let view = ParticleView::new(&p, &v, &m, &b).with_damage(&dmg);
+        let c = EjectaCriterion::new(&[1], 0.0);
+        let plain = opts();
+        let with = CraterOptions {
+            spall_damage: Some(0.9),
+            ..plain
+        };
+        let a = crater(&view, &c, &plain).unwrap();
+        assert_eq!((a.diameter, a.diameter_removed, a.depth), (2.0, 2.0, 3.0));
+        assert!(a.spall_profile.is_none());
+        let s = crater(&view, &c, &with).unwrap();
+        // Spall 2 deep in columns 1–2: the diameter reaches the outer edge of column 2;
+        // the depth stays the bowl's 3, not the 5 of the crushed floor.
+        assert_eq!((s.diameter, s.diameter_removed, s.depth), (6.0, 2.0, 3.0));
+        assert_eq!(s.spall_profile.unwrap().depth, vec![5.0, 2.0, 2.0, 0.0]);
+        // A wholly fractured target leaves nothing to read: NaN, not a number made up.
+        let all = vec![1.0; n];
+        let broken = ParticleView::new(&p, &v, &m, &b).with_damage(&all);
+        let w = crater(&broken, &c, &with).unwrap();
+        assert!(w.diameter.is_nan() && w.depth == 3.0);
     }
 
     #[test]

@@ -42,6 +42,14 @@ pub struct CraterOptions {
     /// Default `None`: a crater is where material was *removed*, and damaged rock still in
     /// place is still there (the study's damaged-but-intact walls, paper §7).
     pub max_damage: Option<f64>,
+    /// Optional: the diameter of the whole crater counts target material with damage
+    /// above this as *spall*, removed (needs damage in the view). The experiment's
+    /// diameter includes the spall zone, measured after the loose, fully fractured plates
+    /// around the bowl have come off; at the end of a run they are still in place or
+    /// barely lifted. Only the diameter reads the spall profile: the depth and the bowl
+    /// stay those of the material actually removed, since the crushed rock under the
+    /// bowl, also fully damaged, stays in place (docs/diagnostics.md §4.3).
+    pub spall_damage: Option<f64>,
 }
 
 impl CraterOptions {
@@ -59,6 +67,7 @@ impl CraterOptions {
             top_offset: 0.0,
             density_cut: None,
             max_damage: None,
+            spall_damage: None,
         }
     }
 
@@ -93,6 +102,15 @@ impl CraterOptions {
                 reason: "must be in [0, 1]",
             });
         }
+        if let Some(d) = self.spall_damage
+            && !(0.0..1.0).contains(&d)
+        {
+            return Err(ImpactError::BadParameter {
+                name: "spall_damage",
+                value: d,
+                reason: "must be in [0, 1) (damage above it is spall)",
+            });
+        }
         Ok(())
     }
 }
@@ -121,6 +139,14 @@ mod tests {
             },
             CraterOptions {
                 max_damage: Some(1.5),
+                ..o
+            },
+            CraterOptions {
+                spall_damage: Some(1.0),
+                ..o
+            },
+            CraterOptions {
+                spall_damage: Some(-0.1),
                 ..o
             },
             CraterOptions {

@@ -232,6 +232,14 @@ fn other_bad_values() {
     );
     let m = message(&format!("{BASE}[solver]\ncfl = 2.0\n"));
     assert!(m.starts_with("scene.toml:21:7: `solver.cfl`:"), "{m}");
+    let m = message(&format!("{BASE}[solver]\nfragment_density_ratio = 1.0\n"));
+    assert!(
+        m.starts_with("scene.toml:21:26: `solver.fragment_density_ratio`:"),
+        "{m}"
+    );
+    let m = message(&format!("{BASE}spall_damage = 0.0\n"));
+    assert!(m.contains("`diagnostics.spall_damage`"), "{m}");
+    assert!(m.contains("must be in (0, 1]"), "{m}");
     let m = message(&edit("name = \"target\"", "name = \"projectile\""));
     assert!(m.contains("used twice"), "{m}");
 }
@@ -334,6 +342,7 @@ fn smoke_scene_runs_end_to_end() {
         serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap()).unwrap();
     for key in [
         "crater_diameter_m",
+        "crater_diameter_removed_m",
         "bowl_diameter_m",
         "crater_depth_m",
         "beta",
@@ -357,6 +366,12 @@ fn smoke_scene_runs_end_to_end() {
     );
     assert!(summary.beta >= 1.0);
     assert!(summary.energy_error.abs() < 1e-9);
+    // Spall only widens: the diameter with fractured rock counted as removed is at least
+    // that of the removed material alone.
+    assert!(
+        summary.crater_diameter_m >= summary.crater_diameter_removed_m,
+        "{summary:?}"
+    );
     let history = std::fs::read_to_string(dir.join("history.csv")).unwrap();
     assert!(history.starts_with("t_s,step,dt_s,beta,"));
     assert_eq!(history.lines().count() as u64, summary.steps + 2);

@@ -99,6 +99,7 @@ pub(crate) fn summarise<D: SceneDimension>(
     let mut summary = RunSummary {
         geometry: D::KIND,
         crater_diameter_m: active(c.diameter),
+        crater_diameter_removed_m: active(c.diameter_removed),
         bowl_diameter_m: active(c.bowl_diameter),
         crater_depth_m: active(c.depth),
         rim_height_m: active(c.rim_height),

@@ -75,7 +75,7 @@ impl Measurer {
     }
 
     /// The crater options: the setup's bin, one bin as the depth threshold, the
-    /// measured offset of the top layer.
+    /// measured offset of the top layer, the setup's spall damage.
     pub fn crater_options(&self) -> CraterOptions {
         let geometry = match self.geometry {
             GeometryKind::ThreeD => Geometry::ThreeD,
@@ -83,6 +83,7 @@ impl Measurer {
         };
         let mut o = CraterOptions::new(geometry, self.setup.crater_bin);
         o.top_offset = self.top_offset;
+        o.spall_damage = self.setup.spall_damage;
         o
     }
 

@@ -74,6 +74,9 @@ pub struct RunSummary {
     pub geometry: GeometryKind,
     /// Crater diameter including the spall zone (m).
     pub crater_diameter_m: f64,
+    /// Diameter of the removed material alone, spall still in place counting as
+    /// surface (m).
+    pub crater_diameter_removed_m: f64,
     /// Diameter of the central bowl (m).
     pub bowl_diameter_m: f64,
     /// Crater depth (m).

@@ -24,6 +24,14 @@ pub struct DiagnosticSetup {
     pub ejecta_tolerance: f64,
     /// Bin width of the ejecta distribution in v_z/U.
     pub ejecta_bin: f64,
+    /// Damage above which target material is spall for the crater diameter; `None` off.
+    pub spall_damage: Option<f64>,
+}
+
+impl DiagnosticSetup {
+    /// Default of `[diagnostics] spall_damage`. 0.9 and 0.99 give the same diameters on
+    /// the bundled basalt runs (docs/validation.md): the spall is fully fractured.
+    pub const DEFAULT_SPALL_DAMAGE: f64 = 0.9;
 }
 
 impl Scene {
@@ -128,6 +136,18 @@ impl Scene {
                 "must be positive",
             ));
         }
+        let spall_damage = match d.spall_damage {
+            None => Some(DiagnosticSetup::DEFAULT_SPALL_DAMAGE),
+            Some(1.0) => None,
+            Some(x) if x > 0.0 && x < 1.0 => Some(x),
+            Some(x) => {
+                return Err(invalid(
+                    "diagnostics.spall_damage",
+                    x,
+                    "must be in (0, 1] (1 turns the spall count off)",
+                ));
+            }
+        };
         Ok(DiagnosticSetup {
             projectile,
             targets,
@@ -136,6 +156,7 @@ impl Scene {
             crater_bin,
             ejecta_tolerance,
             ejecta_bin,
+            spall_damage,
         })
     }
 }

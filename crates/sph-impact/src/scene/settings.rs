@@ -64,4 +64,9 @@ pub struct DiagnosticsSettings {
     /// Bin width of the ejecta distribution in v_z/U; default 0.02.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub ejecta_bin: Option<f64>,
+    /// Target material damaged above this is spall, counted as removed by the crater
+    /// diameter (not the depth or bowl), in (0, 1]; default 0.9, 1 turns it off
+    /// (docs/diagnostics.md §4.3).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub spall_damage: Option<f64>,
 }

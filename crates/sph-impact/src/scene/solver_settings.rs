@@ -105,6 +105,9 @@ pub struct SolverSettings {
     /// `{ kind = "scalar" }` or `{ kind = "asph", max_aspect = … }`.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub smoothing: Option<SmoothingMode>,
+    /// Density fraction of ρ0 below which a damaged solid is fragmented (0 disables).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub fragment_density_ratio: Option<f64>,
 }
 
 impl SolverSettings {
@@ -135,7 +138,8 @@ impl SolverSettings {
             grad_h,
             h_max_factor,
             unbonded_interfaces,
-            smoothing
+            smoothing,
+            fragment_density_ratio
         );
         if let Some(v) = self.viscosity {
             s.viscosity.alpha = v.alpha.unwrap_or(s.viscosity.alpha);

@@ -130,6 +130,17 @@ pub struct SchemeConfig {
     /// stops with [`crate::SolverError::TimestepCollapse`] naming the particle and the
     /// reason, instead of crawling on at ever smaller steps (0 disables).
     pub dt_floor_fraction: f64,
+    /// A damaged solid whose density falls below this fraction of its EOS reference
+    /// density ρ0 has come apart: its damage is set to 1 for good, so it carries no
+    /// deviatoric stress and no tension (0 disables; default
+    /// [`Self::DEFAULT_FRAGMENT_DENSITY_RATIO`]). Why: the flaws of Benz–Asphaug damage
+    /// activate on the stress-based strain σ_1/((1 − D)E), which a particle that has lost
+    /// its stress never reaches again, so its damage can stop at the cap n_act/n_tot < 1
+    /// and it keeps (1 − D) of its cohesion however far it expands. With ρ → 0 the
+    /// acceleration of that residual stress, ~(1 − D)S/(ρh), diverges and the time step
+    /// collapses (the 0.5 mm basalt run at 96 µs, docs/validation.md). Each setting is
+    /// counted in [`crate::DamageEvents::fragmented`].
+    pub fragment_density_ratio: f64,
 }
 
 impl Default for SchemeConfig {
@@ -161,11 +172,17 @@ impl Default for SchemeConfig {
             smoothing: SmoothingMode::Scalar,
             geometry: crate::solver::axisymmetric::Geometry::Cartesian,
             dt_floor_fraction: 1e-6,
+            fragment_density_ratio: Self::DEFAULT_FRAGMENT_DENSITY_RATIO,
         }
     }
 }
 
 impl SchemeConfig {
+    /// Default of [`Self::fragment_density_ratio`]: a solid expanded to half its
+    /// reference density has certainly come apart, and no intact or merely cracked
+    /// material of an impact (spall plates, crater walls, compressed rock) gets there.
+    pub const DEFAULT_FRAGMENT_DENSITY_RATIO: f64 = 0.5;
+
     /// Checks ranges; the error names the field.
     pub fn validate(&self) -> Result<(), crate::SolverError> {
         let bad = |field: &'static str, value: f64, reason: &'static str| {
@@ -186,6 +203,13 @@ impl SchemeConfig {
             return bad(
                 "dt_floor_fraction",
                 self.dt_floor_fraction,
+                "must be in [0, 1)",
+            );
+        }
+        if !(self.fragment_density_ratio >= 0.0 && self.fragment_density_ratio < 1.0) {
+            return bad(
+                "fragment_density_ratio",
+                self.fragment_density_ratio,
                 "must be in [0, 1)",
             );
         }

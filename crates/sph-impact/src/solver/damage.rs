@@ -122,37 +122,72 @@ pub struct DamageEvents {
     pub raised_to_min: u64,
     /// Updates capped at the model's maximum (e.g. the active-flaw fraction n_act/n_tot).
     pub capped_at_max: u64,
+    /// Particles set to D = 1 because their density fell below
+    /// `SchemeConfig::fragment_density_ratio` × ρ0 (each particle once: D = 1 stays).
+    pub fragmented: u64,
 }
 
-/// s ← s0 + dt ds/dt, then the bounds; returns the counts of bound actions. A non-finite
-/// state is left for the solver's state check to report.
+impl DamageEvents {
+    /// Adds the counts of `other`.
+    pub(crate) fn add(&mut self, other: DamageEvents) {
+        self.raised_to_min += other.raised_to_min;
+        self.capped_at_max += other.capped_at_max;
+        self.fragmented += other.fragmented;
+    }
+}
+
+/// The density below which each material's particles are fragmented: `ratio` × the
+/// EOS's reference density for a material with a damage model, none otherwise (and none
+/// for `ratio` = 0).
+pub(crate) fn fragment_densities(materials: &[Material], ratio: f64) -> Vec<Option<f64>> {
+    materials
+        .iter()
+        .map(|m| {
+            let rho0 = m.eos.reference_density()?;
+            (ratio > 0.0 && m.damage.is_some()).then_some(ratio * rho0)
+        })
+        .collect()
+}
+
+/// s ← s0 + dt ds/dt, then the bounds; a particle whose density is below its material's
+/// entry of `fragment_below` (from [`fragment_densities`]) is set to D = 1 instead.
+/// Returns the counts of bound actions and of new fragmentations. A non-finite state is
+/// left for the solver's state check to report.
 pub(crate) fn advance_damage<D: Dimension>(
     y: &mut State<D>,
     s0: &[f64],
     materials: &[Material],
+    fragment_below: &[Option<f64>],
     rates: &[DamageRate],
     dt: f64,
 ) -> DamageEvents {
     let p = &y.particles;
-    let out: Vec<(f64, BoundAction)> = (0..p.len())
+    let out: Vec<(f64, BoundAction, bool)> = (0..p.len())
         .into_par_iter()
         .map(|i| {
-            let Some(model) = &materials[p.material[i] as usize].damage else {
-                return (s0[i], BoundAction::Within);
+            let m = p.material[i] as usize;
+            let Some(model) = &materials[m].damage else {
+                return (s0[i], BoundAction::Within, false);
             };
+            let variable = model.variable();
+            if fragment_below[m].is_some_and(|rho_f| p.density[i] < rho_f) {
+                let whole = variable.from_damage(1.0);
+                return (whole, BoundAction::Within, s0[i] != whole);
+            }
             let s = s0[i] + dt * rates[i].rate;
-            let b = apply_bounds(model.variable(), s, rates[i].bounds);
-            (b.state, b.action)
+            let b = apply_bounds(variable, s, rates[i].bounds);
+            (b.state, b.action, false)
         })
         .collect();
     let mut events = DamageEvents::default();
-    for (i, (s, action)) in out.into_iter().enumerate() {
+    for (i, (s, action, fragmented)) in out.into_iter().enumerate() {
         y.damage_state[i] = s;
         match action {
             BoundAction::RaisedToMin => events.raised_to_min += 1,
             BoundAction::CappedAtMax => events.capped_at_max += 1,
             BoundAction::Within | BoundAction::NonFinite => {}
         }
+        events.fragmented += u64::from(fragmented);
     }
     events
 }
@@ -167,5 +202,77 @@ mod tests {
         assert_eq!(damaged_pressure(-10.0, 1.0), 0.0);
         assert_eq!(damaged_pressure(10.0, 0.7), 10.0);
         assert_eq!(damaged_pressure(0.0, 0.7), 0.0);
+    }
+
+    /// Two rock particles, one at ρ0 and one expanded to 0.4 ρ0, plus an undamageable
+    /// particle at 0.1 ρ0, advanced with zero damage rates.
+    fn expanded_rock() -> (State<sph_core::Dim1>, Vec<Material>) {
+        use sph_core::{ParticleInit, Particles};
+        let rho0 = 2700.0;
+        let eos =
+            sph_eos::LinearElastic::new(sph_eos::LinearElasticParams { rho0, K0: 26.7e9 }).unwrap();
+        let strength = sph_strength::VonMises::new(sph_strength::VonMisesParams {
+            yield_strength: 1.0e8,
+            shear_modulus: 22.7e9,
+            hardening: None,
+        })
+        .unwrap();
+        let rock = Material::solid("rock", eos, strength)
+            .with_damage(sph_damage::MaxTensileStress::new(1.0e7).unwrap());
+        let metal = Material::solid("metal", eos, strength);
+        let mut p = Particles::new();
+        for (k, (rho, material)) in [(rho0, 0), (0.4 * rho0, 0), (0.1 * rho0, 1)]
+            .into_iter()
+            .enumerate()
+        {
+            p.push(ParticleInit {
+                position: k as f64,
+                velocity: 0.0,
+                mass: 1.0,
+                density: rho,
+                specific_energy: 0.0,
+                smoothing_length: 1.0,
+                material,
+            });
+        }
+        let state = State {
+            particles: p,
+            h_tensor: Vec::new(),
+            spacing0: vec![1.0; 3],
+            stress: Vec::new(),
+            plastic_strain: Vec::new(),
+            plastic_strain_rate: Vec::new(),
+            damage_state: vec![0.3, 0.3, 0.0],
+            damage_index: vec![0, 1, 0],
+            time: 0.0,
+            step: 0,
+        };
+        (state, vec![rock, metal])
+    }
+
+    #[test]
+    fn rock_expanded_below_the_fragment_density_is_whole_damage_counted_once() {
+        let (mut y, materials) = expanded_rock();
+        let still = DamageRate {
+            rate: 0.0,
+            bounds: DamageBounds { min: 0.0, max: 1.0 },
+        };
+        let rates = vec![still; 3];
+        let below = fragment_densities(&materials, 0.5);
+        assert_eq!(below, vec![Some(1350.0), None]);
+        let s0 = y.damage_state.clone();
+        let ev = advance_damage(&mut y, &s0, &materials, &below, &rates, 1e-9);
+        // ρ0: untouched; 0.4 ρ0: D = 1; the undamageable 0.1 ρ0 particle: untouched.
+        assert_eq!(y.damage_state, vec![0.3, 1.0, 0.0]);
+        assert_eq!(ev.fragmented, 1);
+        let s1 = y.damage_state.clone();
+        let again = advance_damage(&mut y, &s1, &materials, &below, &rates, 1e-9);
+        assert_eq!((again.fragmented, y.damage_state[1]), (0, 1.0));
+        // Ratio 0 disables the rule.
+        let (mut y, materials) = expanded_rock();
+        let off = fragment_densities(&materials, 0.0);
+        let s0 = y.damage_state.clone();
+        let ev = advance_damage(&mut y, &s0, &materials, &off, &rates, 1e-9);
+        assert_eq!((ev.fragmented, y.damage_state[1]), (0, 0.3));
     }
 }

@@ -8,7 +8,7 @@ use crate::solver::boundary::Boundary;
 use crate::solver::config::{DensityForm, EnergyForm, SchemeConfig, SmoothingMode};
 use crate::solver::damage::{
     DamageEvents, DamageRate, DamageStageInput, advance_damage, damage_of, damage_rates,
-    damaged_pressure,
+    damaged_pressure, fragment_densities,
 };
 use crate::solver::derivatives::{Gradients, Rates, gradients, rates, summation_density};
 use crate::solver::error::SolverError;
@@ -520,11 +520,14 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
         let t0 = Instant::now();
         let mut half = s0_state.clone();
         self.advance(&mut half, &s0_state, &s0, 0.5 * dt);
+        let fragment_below =
+            fragment_densities(&self.materials, self.scheme.fragment_density_ratio);
         if !half.damage_state.is_empty() {
             advance_damage(
                 &mut half,
                 &s0_state.damage_state,
                 &self.materials,
+                &fragment_below,
                 &s0.damage_rates,
                 0.5 * dt,
             );
@@ -541,9 +544,15 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
         self.advance_with_velocity(&mut next, &v_half, &s1, dt, &half);
         if !next.damage_state.is_empty() {
             let s_start = next.damage_state.clone();
-            let ev = advance_damage(&mut next, &s_start, &self.materials, &s1.damage_rates, dt);
-            self.damage_events.raised_to_min += ev.raised_to_min;
-            self.damage_events.capped_at_max += ev.capped_at_max;
+            let ev = advance_damage(
+                &mut next,
+                &s_start,
+                &self.materials,
+                &fragment_below,
+                &s1.damage_rates,
+                dt,
+            );
+            self.damage_events.add(ev);
         }
         // The midpoint stage's ghost forces act over the whole step (v_{n+1} = v_n + dt a_½).
         let m = &next.particles.mass;
