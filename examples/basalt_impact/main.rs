@@ -47,44 +47,6 @@ struct Args {
     threads: Option<usize>,
 }
 
-/// One experiment of paper Table 2, with the study's own simulation.
-struct Experiment {
-    speed: &'static str,
-    /// Crater diameter (m), spall zone included.
-    diameter: f64,
-    /// Crater depth (m).
-    depth: f64,
-    /// Momentum-transfer factor.
-    beta: f64,
-    /// The study's simulation: diameter (m), depth (m), β.
-    study: (f64, f64, f64),
-}
-
-/// Paper Table 2.
-const TABLE_2: [Experiment; 3] = [
-    Experiment {
-        speed: "2.3",
-        diameter: 42e-3,
-        depth: 10e-3,
-        beta: 1.96,
-        study: (35e-3, 10e-3, 1.57),
-    },
-    Experiment {
-        speed: "3.47",
-        diameter: 52e-3,
-        depth: 12e-3,
-        beta: 2.39,
-        study: (43e-3, 14e-3, 2.02),
-    },
-    Experiment {
-        speed: "3.9",
-        diameter: 55e-3,
-        depth: 13.5e-3,
-        beta: 2.51,
-        study: (48e-3, 15e-3, 2.19),
-    },
-];
-
 /// The bundled scene file of a speed.
 fn scene_path(speed: &str, three_d: bool) -> PathBuf {
     let suffix = if three_d { "" } else { "_rz" };
@@ -113,7 +75,7 @@ fn relative(x: f64, reference: f64) -> String {
 }
 
 /// The comparison with Table 2.
-fn print_comparison(s: &RunSummary, e: &Experiment) {
+fn print_comparison(s: &RunSummary, e: &sph_examples::Experiment) {
     println!(
         "\nresult at t = {} against paper Table 2 ({} km/s):",
         micro(s.end_time_s),
@@ -131,6 +93,13 @@ fn print_comparison(s: &RunSummary, e: &Experiment) {
             mm(e.diameter),
             relative(s.crater_diameter_m, e.diameter),
             mm(e.study.0),
+        ),
+        (
+            "  without spall",
+            mm(s.crater_diameter_removed_m),
+            "—".into(),
+            "—".into(),
+            "—".into(),
         ),
         (
             "bowl diameter",
@@ -165,7 +134,7 @@ fn print_comparison(s: &RunSummary, e: &Experiment) {
 
 fn main() -> ExitCode {
     let args = Args::parse();
-    let experiment = TABLE_2
+    let experiment = sph_examples::TABLE_2
         .iter()
         .find(|e| e.speed == args.speed)
         .expect("clap accepts only the three speeds");

@@ -42,15 +42,34 @@ pub(crate) fn cross_section(
     let d: Vec<f64> = sel.iter().map(|&i| a.damage[i]).collect();
     let mut fig = Figure::new(1200, 900);
     let rz = geometry == GeometryKind::Rz;
-    fig.title(if rz {
+    // Frame the target: a few fast ejecta far above it would otherwise shrink the crater
+    // to a corner. The frame spans what lies below the original surface, with half its
+    // width of room above; what it leaves out is counted in the title.
+    let frame = section_frame(&x, &z, surface_z * 1e3);
+    let outside = frame.map_or(0, |f| {
+        x.iter()
+            .zip(&z)
+            .filter(|(x, z)| !(f.0..=f.1).contains(*x) || !(f.2..=f.3).contains(*z))
+            .count()
+    });
+    let what = if rz {
         "RZ half-plane (every ring), coloured by damage D"
     } else {
         "Cross-section |y| < particle spacing, coloured by damage D"
+    };
+    fig.title(if outside > 0 {
+        format!("{what}; {outside} outside the frame")
+    } else {
+        what.to_owned()
     });
     let ax = fig.axes();
     ax.xlabel(if rz { "r (mm)" } else { "x (mm)" })
         .ylabel("z (mm)")
         .equal_aspect(true);
+    if let Some((x0, x1, z0, z1)) = frame {
+        ax.xlim(x0, x1).map_err(&e)?;
+        ax.ylim(z0, z1).map_err(&e)?;
+    }
     let scale = ColorScale {
         map: Colormap::Viridis,
         range: Some((0.0, 1.0)),
@@ -81,6 +100,26 @@ pub(crate) fn cross_section(
         .map_err(&e)?;
     }
     save(&fig, path)
+}
+
+/// The section's frame (x0, x1, z0, z1), same units as the points: the bounds of the
+/// points at or below `surface` widened by 5 % of their width, and half the width above
+/// the surface. `None` when no point lies at or below it (or the surface is not finite).
+fn section_frame(x: &[f64], z: &[f64], surface: f64) -> Option<(f64, f64, f64, f64)> {
+    if !surface.is_finite() {
+        return None;
+    }
+    let (mut x0, mut x1, mut z0) = (f64::INFINITY, f64::NEG_INFINITY, f64::INFINITY);
+    for (&x, &z) in x.iter().zip(z).filter(|(_, z)| **z <= surface) {
+        x0 = x0.min(x);
+        x1 = x1.max(x);
+        z0 = z0.min(z);
+    }
+    let width = x1 - x0;
+    (width > 0.0).then(|| {
+        let m = 0.05 * width;
+        (x0 - m, x1 + m, z0 - m, surface + 0.5 * width)
+    })
 }
 
 /// β(t) and crater depth and diameter against time.
@@ -188,4 +227,21 @@ pub(crate) fn projectile_energy(
         }
     }
     save(&fig, path)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::section_frame;
+
+    #[test]
+    fn the_frame_holds_the_target_and_leaves_out_far_ejecta() {
+        // A 10 × 5 bed below z = 0 and one ejecta particle 500 above it.
+        let x = [0.0, 10.0, 5.0, 3.0];
+        let z = [-5.0, 0.0, -2.0, 500.0];
+        let (x0, x1, z0, z1) = section_frame(&x, &z, 0.0).unwrap();
+        assert_eq!((x0, x1, z0, z1), (-0.5, 10.5, -5.5, 5.0));
+        assert!(z[3] > z1);
+        assert_eq!(section_frame(&x, &z, f64::NAN), None);
+        assert_eq!(section_frame(&[1.0], &[1.0], 0.0), None);
+    }
 }

@@ -1,0 +1,143 @@
+//! The speed-vs-error study of the basalt impacts (docs/validation.md): reads the
+//! `summary.json` of finished runs, prints each run's runtime and the error of crater
+//! diameter, depth and β against paper Table 2, and plots |error| against wall time.
+//!
+//! ```text
+//! cargo run --release -p sph-examples --example speed_vs_error -- \
+//!     RUN_DIR... [--plot docs/validation_speed_vs_error.png]
+//! ```
+//!
+//! Each run's experiment is the Table 2 row at its impact speed (`impact_speed_m_s`).
+
+use clap::Parser;
+use sph_diagnostics::Figure;
+use sph_diagnostics::plot::{BLUE, GREEN, GREY, Marker, RED, Scale, Style};
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+#[derive(Parser, Debug)]
+#[command(about = "Runtime against the error of Ø, depth and β for finished basalt runs")]
+struct Args {
+    /// Run directories, each with a summary.json.
+    #[arg(required = true)]
+    runs: Vec<PathBuf>,
+    /// Where to write the plot (PNG).
+    #[arg(long, default_value = "speed_vs_error.png")]
+    plot: PathBuf,
+}
+
+/// What the study needs of one run's summary.
+struct Run {
+    name: String,
+    speed: &'static str,
+    geometry: String,
+    particles: f64,
+    wall: f64,
+    end_time: f64,
+    /// Signed relative errors of Ø, depth, β.
+    errors: [f64; 3],
+}
+
+fn read(dir: &PathBuf) -> Result<Run, String> {
+    let path = dir.join("summary.json");
+    let text = std::fs::read_to_string(&path).map_err(|e| format!("{}: {e}", path.display()))?;
+    let json: serde_json::Value =
+        serde_json::from_str(&text).map_err(|e| format!("{}: {e}", path.display()))?;
+    let num = |key: &str| {
+        json.get(key)
+            .and_then(serde_json::Value::as_f64)
+            .ok_or_else(|| format!("{}: no number `{key}`", path.display()))
+    };
+    let u = num("impact_speed_m_s")?;
+    let e = sph_examples::experiment_at(u)
+        .ok_or_else(|| format!("{}: impact speed {u} m/s is not in Table 2", path.display()))?;
+    let rel = |x: f64, r: f64| x / r - 1.0;
+    Ok(Run {
+        name: dir.display().to_string(),
+        speed: e.speed,
+        geometry: json["geometry"].as_str().unwrap_or("?").to_owned(),
+        particles: num("particles")?,
+        wall: num("wall_time_s")?,
+        end_time: num("end_time_s")?,
+        errors: [
+            rel(num("crater_diameter_m")?, e.diameter),
+            rel(num("crater_depth_m")?, e.depth),
+            rel(num("beta")?, e.beta),
+        ],
+    })
+}
+
+fn main() -> ExitCode {
+    let args = Args::parse();
+    let mut runs = Vec::new();
+    for dir in &args.runs {
+        match read(dir) {
+            Ok(r) => runs.push(r),
+            Err(m) => {
+                eprintln!("error: {m}");
+                return ExitCode::FAILURE;
+            }
+        }
+    }
+    runs.sort_by(|a, b| a.wall.total_cmp(&b.wall));
+    println!(
+        "| run | km/s | geometry | particles | t_end (µs) | wall (s) | Ø error | depth error | β error |"
+    );
+    println!("|---|---|---|---|---|---|---|---|---|");
+    for r in &runs {
+        let [d, h, b] = r.errors.map(|x| format!("{:+.1} %", 100.0 * x));
+        println!(
+            "| {} | {} | {} | {} | {:.0} | {:.0} | {d} | {h} | {b} |",
+            r.name,
+            r.speed,
+            r.geometry,
+            r.particles,
+            r.end_time * 1e6,
+            r.wall
+        );
+    }
+    if runs.iter().any(|r| r.speed != runs[0].speed) {
+        println!("no plot: the runs are of different speeds (the plot compares one speed)");
+        return ExitCode::SUCCESS;
+    }
+    let mut fig = Figure::new(1000, 700);
+    fig.title(format!(
+        "Basalt impact at {} km/s: error against Table 2 vs runtime",
+        runs[0].speed
+    ));
+    let plotted = (|| {
+        let ax = fig.panel(0, 0, 1, 1)?;
+        ax.xlabel("wall time (s)")
+            .ylabel("|error| (%)")
+            .xscale(Scale::Log)
+            .grid(true);
+        let wall: Vec<f64> = runs.iter().map(|r| r.wall).collect();
+        for (k, (name, color)) in [("diameter", BLUE), ("depth", RED), ("beta", GREEN)]
+            .into_iter()
+            .enumerate()
+        {
+            let err: Vec<f64> = runs.iter().map(|r| 100.0 * r.errors[k].abs()).collect();
+            ax.line(&wall, &err, Style::line(color).label(name))?;
+            ax.scatter(
+                &wall,
+                &err,
+                Style::points(color).marker(Marker::Circle).size(9.0),
+            )?;
+        }
+        ax.hline(
+            20.0,
+            Style::line(GREY).dashed(6.0, 4.0).label("20 % target"),
+        )?;
+        fig.save_png(&args.plot)
+    })();
+    match plotted {
+        Ok(_) => {
+            println!("plot: {}", args.plot.display());
+            ExitCode::SUCCESS
+        }
+        Err(e) => {
+            eprintln!("error: {}: {e}", args.plot.display());
+            ExitCode::FAILURE
+        }
+    }
+}
