@@ -12,7 +12,7 @@
 use clap::Parser;
 use sph_diagnostics::Figure;
 use sph_diagnostics::plot::{BLUE, GREEN, GREY, Marker, RED, Scale, Style};
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 #[derive(Parser, Debug)]
@@ -38,7 +38,7 @@ struct Run {
     errors: [f64; 3],
 }
 
-fn read(dir: &PathBuf) -> Result<Run, String> {
+fn read(dir: &Path) -> Result<Run, String> {
     let path = dir.join("summary.json");
     let text = std::fs::read_to_string(&path).map_err(|e| format!("{}: {e}", path.display()))?;
     let json: serde_json::Value =
