@@ -451,3 +451,59 @@ fn rz_taylor_foot_does_not_jet() {
     println!("fastest particle over 15 µs: {fastest:.1} m/s (impact {speed} m/s)");
     assert!(fastest < 2.0 * speed, "{fastest}");
 }
+
+/// A bar of 10 solid particles, a lone solid particle far from it at a thousandth of ρ0,
+/// and a lone gas particle as thin, stepped once with `scheme`.
+fn lone_thin_particles(scheme: SchemeConfig) -> Simulation<Dim1, WendlandC2> {
+    let (eos, strength) = elastic();
+    let dx = 1.0e-3;
+    let mut p = Particles::<Dim1>::new();
+    let mut push = |x: f64, rho: f64, material: u16| {
+        p.push(ParticleInit {
+            position: x,
+            velocity: 0.0,
+            mass: RHO * dx,
+            density: rho,
+            specific_energy: if material == 1 { 1.0e3 } else { 0.0 },
+            smoothing_length: 2.5 * dx,
+            material,
+        })
+    };
+    for k in 0..10 {
+        push(k as f64 * dx, RHO, 0);
+    }
+    push(1.0, 1e-3 * RHO, 0);
+    push(2.0, 1e-3 * RHO, 1);
+    let gas = Material::fluid("gas", sph_eos::IdealGas::with_gamma(1.4).unwrap());
+    let mut sim = Simulation::new(
+        p,
+        vec![Material::solid("bar", eos, strength), gas],
+        scheme,
+        WendlandC2,
+        Vec::new(),
+        None,
+    )
+    .unwrap();
+    sim.step(f64::INFINITY).unwrap();
+    sim
+}
+
+/// After a step the lone solid sits at its floor m/(h_max_factor Δp0) (counted), the gas
+/// is left alone, the bar is untouched; with the floor off the solid stays thin.
+#[test]
+fn a_solid_density_is_floored_where_its_kernel_stops_growing_and_a_gas_is_not() {
+    let sim = lone_thin_particles(SchemeConfig::default());
+    let rho = &sim.state.particles.density;
+    let floor = RHO * 1.0e-3 / (SchemeConfig::default().h_max_factor * 1.0e-3);
+    println!("floor {floor} kg/m³: lone solid {}, lone gas {}", rho[10], rho[11]);
+    assert!((rho[10] / floor - 1.0).abs() < 1e-12, "{}", rho[10]);
+    assert_eq!(rho[11], 1e-3 * RHO);
+    assert_eq!(sim.density_floor_events, 1);
+    assert!(rho[..10].iter().all(|&r| r > 0.5 * RHO));
+    let off = lone_thin_particles(SchemeConfig {
+        solid_density_floor: false,
+        ..Default::default()
+    });
+    assert_eq!(off.state.particles.density[10], 1e-3 * RHO);
+    assert_eq!(off.density_floor_events, 0);
+}

@@ -130,6 +130,7 @@ pub(crate) fn summarise<D: SceneDimension>(
         energy_error: last.energy() / initial.energy() - 1.0,
         timings: sim.timings,
         damage_events: sim.damage_events,
+        density_floor_events: sim.density_floor_events,
     };
     summary.set_beta(&beta);
     summary.wall_time_s = job.wall.elapsed().as_secs_f64();

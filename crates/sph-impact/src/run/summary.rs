@@ -136,6 +136,9 @@ pub struct RunSummary {
     pub timings: PhaseTimes,
     /// What the damage bounds did.
     pub damage_events: DamageEvents,
+    /// Times a solid particle's density was raised to its floor
+    /// (`SchemeConfig::solid_density_floor`).
+    pub density_floor_events: u64,
 }
 
 impl RunSummary {

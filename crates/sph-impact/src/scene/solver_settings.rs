@@ -108,6 +108,9 @@ pub struct SolverSettings {
     /// Density fraction of ρ0 below which a damaged solid is fragmented (0 disables).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub fragment_density_ratio: Option<f64>,
+    /// Keep a solid's density above the value at which h reaches its cap.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub solid_density_floor: Option<bool>,
 }
 
 impl SolverSettings {
@@ -139,7 +142,8 @@ impl SolverSettings {
             h_max_factor,
             unbonded_interfaces,
             smoothing,
-            fragment_density_ratio
+            fragment_density_ratio,
+            solid_density_floor
         );
         if let Some(v) = self.viscosity {
             s.viscosity.alpha = v.alpha.unwrap_or(s.viscosity.alpha);

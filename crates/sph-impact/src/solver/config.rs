@@ -141,6 +141,18 @@ pub struct SchemeConfig {
     /// collapses (the 0.5 mm basalt run at 96 µs, docs/validation.md). Each setting is
     /// counted in [`crate::DamageEvents::fragmented`].
     pub fragment_density_ratio: f64,
+    /// A solid's density never falls below m/(h_max_factor Δp0)^d (in RZ with the ring's
+    /// area mass m/r): the density at which its smoothing length reaches the cap
+    /// `h_max_factor`, about ρ0/h_max_factor^d. Below it the continuity equation no longer
+    /// describes anything the capped kernel can resolve; what drives it there is the mass
+    /// form's neighbour-mass sum, Σ m_j v_ij·∇W, which does not scale with ρ_i: a
+    /// particle torn off a dense plate, still inside the plate's kernels, is emptied at
+    /// the plate's rate. At ρ ≈ 1e-5 ρ0 the next neighbour to come by then compresses
+    /// it at a relative rate ~1e13 /s and the density vote stops the run (0.5 mm basalt
+    /// run at 100 µs, docs/validation.md). Fluids are left free (near-vacuum Riemann
+    /// problems need their low densities). Each flooring of a particle in a step is
+    /// counted in [`crate::Simulation::density_floor_events`].
+    pub solid_density_floor: bool,
 }
 
 impl Default for SchemeConfig {
@@ -173,6 +185,7 @@ impl Default for SchemeConfig {
             geometry: crate::solver::axisymmetric::Geometry::Cartesian,
             dt_floor_fraction: 1e-6,
             fragment_density_ratio: Self::DEFAULT_FRAGMENT_DENSITY_RATIO,
+            solid_density_floor: true,
         }
     }
 }

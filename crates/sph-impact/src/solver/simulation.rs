@@ -110,6 +110,9 @@ pub struct Simulation<D: Dimension, K: Kernel> {
     /// What the damage bounds did so far (instant failures, caps at the active-flaw
     /// fraction).
     pub damage_events: DamageEvents,
+    /// How many times a solid particle's density was raised to its floor at the end of
+    /// a step (`SchemeConfig::solid_density_floor`).
+    pub density_floor_events: u64,
     /// Particles whose velocity is held at its value (a clamp, a driven end); empty
     /// when none. See [`Self::hold_velocity`].
     held: Vec<bool>,
@@ -209,6 +212,7 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
             timings: PhaseTimes::default(),
             boundary_impulse: D::Vector::ZERO,
             damage_events: DamageEvents::default(),
+            density_floor_events: 0,
             held: Vec::new(),
             first_dt: None,
             smoothed_radius: rz.then(|| {
@@ -542,6 +546,7 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
         // x_{n+1} = x_n + dt v_{1/2}; the other fields with the midpoint rates.
         let v_half = half.particles.velocity.clone();
         self.advance_with_velocity(&mut next, &v_half, &s1, dt, &half);
+        self.density_floor_events += self.floor_density(&mut next);
         if !next.damage_state.is_empty() {
             let s_start = next.damage_state.clone();
             let ev = advance_damage(
@@ -599,6 +604,45 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
     fn advance(&self, y: &mut State<D>, y0: &State<D>, stage: &Stage<D>, dt: f64) {
         let v = y0.particles.velocity.clone();
         self.advance_with_velocity(y, &v, stage, dt, y0);
+        self.floor_density(y);
+    }
+
+    /// Raises each solid particle's density to m/(h_max_factor Δp0)^d (area mass in RZ)
+    /// if it fell below, and returns how many were raised; a no-op with
+    /// `solid_density_floor` off or summation density (never below its self-term). See
+    /// [`SchemeConfig::solid_density_floor`].
+    fn floor_density(&self, y: &mut State<D>) -> u64 {
+        if !self.scheme.solid_density_floor || self.scheme.density == DensityForm::Summation {
+            return 0;
+        }
+        let d = D::DIM as i32;
+        let rz = self.scheme.geometry == Geometry::Axisymmetric;
+        let cap = self.scheme.h_max_factor;
+        let materials = &self.materials;
+        let p = &mut y.particles;
+        let (m, x, mat) = (&p.mass, &p.position, &p.material);
+        let s0 = &y.spacing0;
+        p.density
+            .par_iter_mut()
+            .enumerate()
+            .map(|(i, rho)| {
+                if materials[mat[i] as usize].strength.is_none() {
+                    return 0;
+                }
+                let mi = if rz {
+                    area_mass(m[i], radius(x[i]))
+                } else {
+                    m[i]
+                };
+                let floor = mi / (cap * s0[i]).powi(d);
+                if *rho < floor {
+                    *rho = floor;
+                    1
+                } else {
+                    0
+                }
+            })
+            .sum()
     }
 
     fn advance_with_velocity(
