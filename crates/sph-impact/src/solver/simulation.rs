@@ -2,7 +2,7 @@
 //! second-order Runge–Kutta (midpoint) method and the adaptive CFL step (paper §2.5).
 
 use crate::solver::axisymmetric::{
-    Geometry, HoopInput, SmoothedRadius, add_hoop_terms, area_mass, radius,
+    Geometry, HoopInput, SmoothedRadius, add_hoop_terms, area_mass, radius, reference_spacing,
 };
 use crate::solver::boundary::Boundary;
 use crate::solver::config::{DensityForm, EnergyForm, SchemeConfig, SmoothingMode};
@@ -118,6 +118,9 @@ pub struct Simulation<D: Dimension, K: Kernel> {
     held: Vec<bool>,
     /// RZ with summation density: the kernel-smoothed radius table.
     smoothed_radius: Option<SmoothedRadius>,
+    /// RZ only: each particle's radius at set-up, r₀ (the artificial stress' reference
+    /// spacing scales with √(r₀/r); `axisymmetric::reference_spacing`); empty otherwise.
+    radius0: Vec<f64>,
     /// The first step's vote (the reference of `SchemeConfig::dt_floor_fraction`).
     first_dt: Option<f64>,
     kernel: K,
@@ -193,6 +196,11 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
         };
         let (damage_state, damage_index) = damage_setup(&particles, &materials)?;
         let rz = scheme.geometry == Geometry::Axisymmetric;
+        let radius0 = if rz {
+            particles.position.iter().map(|x| radius(*x)).collect()
+        } else {
+            Vec::new()
+        };
         Ok(Self {
             state: State {
                 particles,
@@ -215,6 +223,7 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
             density_floor_events: 0,
             held: Vec::new(),
             first_dt: None,
+            radius0,
             smoothed_radius: rz.then(|| {
                 SmoothedRadius::new(|u, v| {
                     kernel.w(D::Vector::from_fn(|k| if k == 0 { u } else { v }), 1.0)
@@ -341,6 +350,19 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
             for k in ext.n_real..ext.position.len() {
                 let src = ext.source[k] as usize;
                 ext.mass[k] *= ext.radius[k] / ext.radius[src];
+            }
+            // The artificial stress' Δp is the ring's (r, z) spacing at its present radius
+            // (a mirror or wall ghost has its source's: it stands for the same area).
+            if !self.scheme.artificial_stress.is_off() {
+                for k in 0..ext.position.len() {
+                    let src = ext.source[k] as usize;
+                    ext.spacing0[k] = reference_spacing(
+                        state.spacing0[src],
+                        self.radius0[src],
+                        ext.radius[src],
+                        self.scheme.h_max_factor,
+                    );
+                }
             }
         }
         let list = if ext.h_tensor.is_empty() {
