@@ -3,19 +3,9 @@
 # particles that are not ejecta (above the surface and moving up), floor = highest wall
 # particle per 1 mm bin of r, depth = -floor - top_offset, diameter = contiguous run from
 # the axis of bins deeper than one bin.
-import re, base64, struct, sys, math
-def read(path):
-    s = open(path).read()
-    out = {}
-    for m in re.finditer(r'<DataArray type="(\w+)" Name="(\w+)" NumberOfComponents="(\d+)" format="binary">\s*([A-Za-z0-9+/=]+)\s*</DataArray>', s):
-        t, name, nc, data = m.group(1), m.group(2), int(m.group(3)), m.group(4)
-        raw = base64.b64decode(data)
-        n = struct.unpack('<Q', raw[:8])[0]
-        fmt = {'Float64': 'd', 'UInt16': 'H', 'Int64': 'q', 'UInt8': 'B'}[t]
-        size = struct.calcsize(fmt)
-        vals = struct.unpack('<%d%s' % (n // size, fmt), raw[8:8 + n])
-        out[name] = [vals[i*nc:(i+1)*nc] for i in range(len(vals)//nc)] if nc > 1 else list(vals)
-    return out
+import sys, math, os
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from vtu_read import read
 # Usage: python3 crater_damage_cut.py SNAPSHOT.vtu TARGET_MATERIAL_ID BIN_M TOP_OFFSET_M
 d = read(sys.argv[1]); target = int(sys.argv[2]); b = float(sys.argv[3]); top = float(sys.argv[4])
 for max_d in [1.01, 0.99, 0.9, 0.5]:
