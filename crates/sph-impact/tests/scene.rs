@@ -46,6 +46,19 @@ fn message(text: &str) -> String {
     m
 }
 
+/// One line with what a smoke run produced (particles are rings in RZ).
+fn print_result(label: &str, s: &sph_impact::run::RunSummary) {
+    println!(
+        "{label}: {} particles, {} steps, β {:.4}, crater Ø {:.2} mm, depth {:.2} mm, {:.2} s",
+        s.particles,
+        s.steps,
+        s.beta,
+        s.crater_diameter_m * 1e3,
+        s.crater_depth_m * 1e3,
+        s.wall_time_s
+    );
+}
+
 fn workspace() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("../..")
 }
@@ -375,15 +388,7 @@ fn smoke_scene_runs_end_to_end() {
     assert_eq!(history.lines().count() as u64, summary.steps + 2);
     let pvd = std::fs::read_to_string(dir.join("run.pvd")).unwrap();
     assert_eq!(pvd.matches("<DataSet").count(), 5);
-    println!(
-        "smoke: {} particles, {} steps, β {:.4}, crater Ø {:.2} mm, depth {:.2} mm, {:.1} s",
-        summary.particles,
-        summary.steps,
-        summary.beta,
-        summary.crater_diameter_m * 1e3,
-        summary.crater_depth_m * 1e3,
-        summary.wall_time_s
-    );
+    print_result("smoke", &summary);
 }
 
 #[test]
@@ -575,15 +580,7 @@ fn rz_smoke_scene_runs_end_to_end() {
     );
     let vtu = std::fs::read_to_string(dir.join("snapshots/00002.vtu")).unwrap();
     assert!(vtu.contains("Name=\"deviatoric_stress\""));
-    println!(
-        "smoke (rz): {} rings, {} steps, β {:.4}, crater Ø {:.2} mm, depth {:.2} mm, {:.2} s",
-        summary.particles,
-        summary.steps,
-        summary.beta,
-        summary.crater_diameter_m * 1e3,
-        summary.crater_depth_m * 1e3,
-        summary.wall_time_s
-    );
+    print_result("smoke (rz)", &summary);
 }
 
 #[test]

@@ -73,6 +73,19 @@ pub(crate) fn area_mass(m: f64, r: f64) -> f64 {
     m / r
 }
 
+impl Geometry {
+    /// The mass whose ratio to ρ is a particle's kernel measure (length, area or
+    /// volume): its mass in Cartesian runs, the area mass m/r of a ring at `x` in RZ.
+    /// The smoothing length and the solid density floor both follow it.
+    #[inline]
+    pub(crate) fn kernel_mass<V: Vector>(self, m: f64, x: V) -> f64 {
+        match self {
+            Geometry::Cartesian => m,
+            Geometry::Axisymmetric => area_mass(m, radius(x)),
+        }
+    }
+}
+
 /// The artificial stress' reference spacing Δp of a ring now at radius `r` that was placed
 /// at `r0` with (r, z) spacing `spacing0`: Δp₀ √(r₀/r), at most `cap` Δp₀.
 ///

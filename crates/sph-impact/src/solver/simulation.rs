@@ -2,7 +2,7 @@
 //! second-order Runge–Kutta (midpoint) method and the adaptive CFL step (paper §2.5).
 
 use crate::solver::axisymmetric::{
-    Geometry, HoopInput, SmoothedRadius, add_hoop_terms, area_mass, radius, reference_spacing,
+    Geometry, HoopInput, SmoothedRadius, add_hoop_terms, radius, reference_spacing,
 };
 use crate::solver::boundary::Boundary;
 use crate::solver::config::{DensityForm, EnergyForm, SchemeConfig, SmoothingMode};
@@ -638,7 +638,7 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
             return 0;
         }
         let d = D::DIM as i32;
-        let rz = self.scheme.geometry == Geometry::Axisymmetric;
+        let geometry = self.scheme.geometry;
         let cap = self.scheme.h_max_factor;
         let materials = &self.materials;
         let p = &mut y.particles;
@@ -651,12 +651,7 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
                 if materials[mat[i] as usize].strength.is_none() {
                     return 0;
                 }
-                let mi = if rz {
-                    area_mass(m[i], radius(x[i]))
-                } else {
-                    m[i]
-                };
-                let floor = mi / (cap * s0[i]).powi(d);
+                let floor = geometry.kernel_mass(m[i], x[i]) / (cap * s0[i]).powi(d);
                 if *rho < floor {
                     *rho = floor;
                     1
@@ -722,17 +717,13 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
                 let (m, rho) = (&p.mass, &p.density);
                 let (s0, cap) = (&y.spacing0, self.scheme.h_max_factor);
                 let x = &p.position;
-                let rz = self.scheme.geometry == Geometry::Axisymmetric;
+                let geometry = self.scheme.geometry;
                 p.smoothing_length
                     .par_iter_mut()
                     .enumerate()
                     .for_each(|(i, h)| {
                         // The area (or volume) per particle: m/ρ, in RZ (m/r)/ρ.
-                        let mi = if rz {
-                            area_mass(m[i], radius(x[i]))
-                        } else {
-                            m[i]
-                        };
+                        let mi = geometry.kernel_mass(m[i], x[i]);
                         if rho[i] > 0.0 {
                             *h = (n_target * (mi / rho[i]).powf(1.0 / d))
                                 .min(cap * n_target * s0[i]);
@@ -747,11 +738,7 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
                     .into_par_iter()
                     .map(|i| {
                         let target = if rho[i] > 0.0 {
-                            let mi = if self.scheme.geometry == Geometry::Axisymmetric {
-                                area_mass(m[i], radius(p.position[i]))
-                            } else {
-                                m[i]
-                            };
+                            let mi = self.scheme.geometry.kernel_mass(m[i], p.position[i]);
                             n_target * (mi / rho[i]).powf(1.0 / d)
                         } else {
                             1.0 / h_src[i].sym_eigen().values[0]
