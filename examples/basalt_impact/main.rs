@@ -5,7 +5,7 @@
 //! By default it runs the 3.9 km/s case in axisymmetric (RZ) geometry from the bundled
 //! scene `examples/scenes/basalt_3.9kms_rz.toml` (the same bodies and settings as the 3-D
 //! `basalt_3.9kms.toml`), at resolution scale 0.5 (A_res = 1 mm instead of the study's
-//! 0.5 mm) to the study's 400 µs: a few minutes on two cores (docs/scenes.md). At the end
+//! 0.5 mm) to the study's 400 µs: 694 s on one shared core (docs/validation.md). At the end
 //! it prints crater diameter, bowl diameter, depth and β beside the experiment's values.
 //!
 //! ```text
