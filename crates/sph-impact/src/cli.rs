@@ -12,12 +12,13 @@ pub fn verify(
     out: Option<&Path>,
     json: bool,
     rz: bool,
+    deposit: Option<crate::verify::SedovDeposit>,
 ) -> Result<(), String> {
     let scheme = scheme_with_overrides(problem.default_scheme(), scheme)?;
-    let outcome = if rz {
-        problem.run_rz(resolution, scheme)
-    } else {
-        problem.run_with(resolution, scheme)
+    let outcome = match deposit {
+        Some(d) => problem.run_sedov(resolution, scheme, d, rz),
+        None if rz => problem.run_rz(resolution, scheme),
+        None => problem.run_with(resolution, scheme),
     }
     .map_err(|e| e.to_string())?;
     if json {

@@ -6,7 +6,7 @@
 use clap::{Parser, Subcommand};
 use sph_impact::cli::CommandError;
 use sph_impact::run::RunOptions;
-use sph_impact::verify::Problem;
+use sph_impact::verify::{Problem, SedovDeposit};
 use std::path::PathBuf;
 use std::process::ExitCode;
 
@@ -84,6 +84,10 @@ enum Command {
         /// noh-spherical and taylor).
         #[arg(long, default_value = "3d", value_parser = ["3d", "rz"])]
         geometry: String,
+        /// Sedov only: how the blast energy goes into the centre, `top-hat` (default:
+        /// equal specific energy within one support radius) or `kernel` (kernel-weighted).
+        #[arg(long)]
+        deposit: Option<SedovDeposit>,
     },
 }
 
@@ -128,6 +132,7 @@ fn main() -> ExitCode {
             out,
             json,
             geometry,
+            deposit,
         } => sph_impact::cli::verify(
             problem,
             resolution,
@@ -135,6 +140,7 @@ fn main() -> ExitCode {
             out.as_deref(),
             json,
             geometry == "rz",
+            deposit,
         )
         .map_err(CommandError::failed),
     };

@@ -22,6 +22,7 @@ mod tensile_bar;
 
 pub use contact3d::sphere_into_block;
 pub use outcome::{Outcome, Panel, Picture, Profile};
+pub use sedov::Deposit as SedovDeposit;
 
 use std::str::FromStr;
 
@@ -229,7 +230,7 @@ impl Problem {
     ) -> Result<Outcome, crate::SolverError> {
         let n = self.resolve(resolution, &scheme)?;
         match self {
-            Problem::Sedov3d => sedov::run_rz(n, scheme),
+            Problem::Sedov3d => sedov::run_rz(n, scheme, SedovDeposit::default()),
             Problem::NohSpherical => noh::run_spherical_rz(n, scheme),
             Problem::Taylor => taylor::run_rz(n, scheme),
             Problem::NohPlanar => noh::run_planar_rz(n, scheme),
@@ -239,6 +240,28 @@ impl Problem {
                 field: "geometry",
                 value: 0.0,
                 reason: "this problem has no axisymmetric (RZ) form (noh-planar, hel-impact, contact, sedov-3d, noh-spherical and taylor have)",
+            }),
+        }
+    }
+
+    /// Runs `sedov-2d` or `sedov-3d` (in RZ when `rz`) with the blast energy put in by
+    /// `deposit`; the other problems have no deposit and give an error.
+    pub fn run_sedov(
+        &self,
+        resolution: Option<usize>,
+        scheme: crate::SchemeConfig,
+        deposit: SedovDeposit,
+        rz: bool,
+    ) -> Result<Outcome, crate::SolverError> {
+        let n = self.resolve(resolution, &scheme)?;
+        match (self, rz) {
+            (Problem::Sedov2d, false) => sedov::run_2d(n, scheme, deposit),
+            (Problem::Sedov3d, false) => sedov::run_3d(n, scheme, deposit),
+            (Problem::Sedov3d, true) => sedov::run_rz(n, scheme, deposit),
+            _ => Err(crate::SolverError::BadConfig {
+                field: "deposit",
+                value: 0.0,
+                reason: "only the Sedov problems (sedov-2d, sedov-3d) have an energy deposit",
             }),
         }
     }
@@ -257,8 +280,8 @@ impl Problem {
             Problem::NohPlanar => noh::run_planar(n, scheme),
             Problem::NohCylindrical => noh::run_cylindrical(n, scheme),
             Problem::NohSpherical => noh::run_spherical(n, scheme),
-            Problem::Sedov2d => sedov::run_2d(n, scheme),
-            Problem::Sedov3d => sedov::run_3d(n, scheme),
+            Problem::Sedov2d => sedov::run_2d(n, scheme, SedovDeposit::default()),
+            Problem::Sedov3d => sedov::run_3d(n, scheme, SedovDeposit::default()),
             Problem::ElasticBar => elastic_bar::run(n, scheme),
             Problem::HelImpact => hel_impact::run(n, scheme, column::Planar::OneD),
             Problem::Spin => spin::run(n, scheme),
