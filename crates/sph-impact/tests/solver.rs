@@ -153,6 +153,12 @@ fn sod_meets_its_targets() {
 }
 
 #[test]
+fn sod_rejects_a_resolution_that_does_not_fit_the_right_state() {
+    let err = Problem::Sod.run(Some(300)).unwrap_err().to_string();
+    assert!(err.contains("multiple of 8"), "{err}");
+}
+
+#[test]
 fn toro_123_stays_positive() {
     let o = Problem::Toro123.run(Some(200)).unwrap();
     assert!(o.get("min_pressure_over_run").unwrap() >= 0.0);

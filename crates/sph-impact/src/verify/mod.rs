@@ -113,7 +113,7 @@ impl Problem {
     pub fn resolution_doc(&self) -> (&'static str, usize) {
         match self {
             Problem::Sod => (
-                "particles in the left state (the right has 1/8 as many)",
+                "particles in the left state, a multiple of 8 (the right has 1/8 as many)",
                 400,
             ),
             Problem::Toro123 | Problem::Toro3 => ("particles across [0, 1]", 400),

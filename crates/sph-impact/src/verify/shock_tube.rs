@@ -58,6 +58,15 @@ fn spec(t: Tube) -> Spec {
 /// particles across [0, 1] for the others.
 pub(crate) fn run(tube: Tube, n: usize, sch: crate::SchemeConfig) -> Result<Outcome, SolverError> {
     let s = spec(tube);
+    if tube == Tube::Sod && n % 8 != 0 {
+        // The right state holds n/8 equal-mass particles in [0.5, 1]: any other n puts a
+        // particle on the wall and compresses the right state.
+        return Err(SolverError::BadConfig {
+            field: "resolution",
+            value: n as f64,
+            reason: "Sod needs a multiple of 8 (n particles left of the jump, n/8 right of it)",
+        });
+    }
     let gamma = 1.4;
     let (rl, rr) = (s.left[0], s.right[0]);
     // Equal masses: dx_L/dx_R = ρ_R/ρ_L.
