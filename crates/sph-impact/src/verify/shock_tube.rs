@@ -58,7 +58,7 @@ fn spec(t: Tube) -> Spec {
 /// particles across [0, 1] for the others.
 pub(crate) fn run(tube: Tube, n: usize, sch: crate::SchemeConfig) -> Result<Outcome, SolverError> {
     let s = spec(tube);
-    if tube == Tube::Sod && n % 8 != 0 {
+    if tube == Tube::Sod && !n.is_multiple_of(8) {
         // The right state holds n/8 equal-mass particles in [0.5, 1]: any other n puts a
         // particle on the wall and compresses the right state.
         return Err(SolverError::BadConfig {
