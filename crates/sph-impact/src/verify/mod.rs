@@ -237,7 +237,7 @@ impl Problem {
     ) -> Result<Outcome, crate::SolverError> {
         let n = self.resolve(resolution, &scheme)?;
         match self {
-            Problem::Sedov3d => sedov::run_rz(n, scheme, SedovDeposit::default()),
+            Problem::Sedov3d => self.run_sedov(Some(n), scheme, SedovDeposit::default(), true),
             Problem::NohSpherical => noh::run_spherical_rz(n, scheme),
             Problem::Taylor => taylor::run_rz(n, scheme),
             Problem::NohPlanar => noh::run_planar_rz(n, scheme),
@@ -287,8 +287,9 @@ impl Problem {
             Problem::NohPlanar => noh::run_planar(n, scheme),
             Problem::NohCylindrical => noh::run_cylindrical(n, scheme),
             Problem::NohSpherical => noh::run_spherical(n, scheme),
-            Problem::Sedov2d => sedov::run_2d(n, scheme, SedovDeposit::default()),
-            Problem::Sedov3d => sedov::run_3d(n, scheme, SedovDeposit::default()),
+            Problem::Sedov2d | Problem::Sedov3d => {
+                self.run_sedov(Some(n), scheme, SedovDeposit::default(), false)
+            }
             Problem::ElasticBar => elastic_bar::run(n, scheme),
             Problem::HelImpact => hel_impact::run(n, scheme, column::Planar::OneD),
             Problem::Spin => spin::run(n, scheme),
