@@ -5,7 +5,9 @@
 //! cubic lattices at 6 mm/15 = 0.4 mm, the study's artificial stress, scalar h. Prints
 //! particle-steps per second and particle-derivative evaluations per second (an RK2 step
 //! is two) at 1 and 2 threads, the share of time per phase, and the peak resident memory
-//! per particle (VmHWM growth from before the set-up, Linux).
+//! per particle (VmHWM growth from before the set-up, Linux), and the peak of the live heap
+//! per particle counted by this binary's allocator, over the whole run and over the steps
+//! alone (what a long run holds at its worst, whatever the set-up needed).
 //!
 //! `cargo bench -p sph-benches --bench solid3d` (options after `--`: spacings across the
 //! sphere, steps).
@@ -13,7 +15,50 @@
 use sph_core::Dim3;
 use sph_impact::{SchemeConfig, Simulation};
 use sph_kernel::KernelChoice;
+use std::alloc::{GlobalAlloc, Layout, System};
+use std::sync::atomic::{AtomicUsize, Ordering};
 use std::time::Instant;
+
+/// The system allocator, counting the live heap and its peak (bench-only instrumentation:
+/// the solver itself never sees it).
+struct Counting;
+
+static LIVE: AtomicUsize = AtomicUsize::new(0);
+static PEAK: AtomicUsize = AtomicUsize::new(0);
+
+#[allow(unsafe_code)]
+// SAFETY: every call forwards to `System` with the caller's layout unchanged; the
+// counters are only bookkeeping.
+unsafe impl GlobalAlloc for Counting {
+    unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
+        let p = unsafe { System.alloc(layout) };
+        if !p.is_null() {
+            let now = LIVE.fetch_add(layout.size(), Ordering::Relaxed) + layout.size();
+            PEAK.fetch_max(now, Ordering::Relaxed);
+        }
+        p
+    }
+    unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
+        unsafe { System.dealloc(ptr, layout) };
+        LIVE.fetch_sub(layout.size(), Ordering::Relaxed);
+    }
+    unsafe fn realloc(&self, ptr: *mut u8, layout: Layout, new_size: usize) -> *mut u8 {
+        let p = unsafe { System.realloc(ptr, layout, new_size) };
+        if !p.is_null() {
+            if new_size >= layout.size() {
+                let grow = new_size - layout.size();
+                let now = LIVE.fetch_add(grow, Ordering::Relaxed) + grow;
+                PEAK.fetch_max(now, Ordering::Relaxed);
+            } else {
+                LIVE.fetch_sub(layout.size() - new_size, Ordering::Relaxed);
+            }
+        }
+        p
+    }
+}
+
+#[global_allocator]
+static ALLOCATOR: Counting = Counting;
 
 /// Peak resident set size (bytes) of this process so far, from /proc (Linux); 0 elsewhere.
 fn peak_rss() -> f64 {
@@ -47,7 +92,11 @@ fn main() {
             .unwrap();
         pool.install(|| {
             let rss0 = peak_rss();
+            let heap0 = LIVE.load(Ordering::Relaxed);
+            PEAK.store(heap0, Ordering::Relaxed);
             let mut sim = setup(n);
+            let heap_setup = LIVE.load(Ordering::Relaxed);
+            let peak_setup = PEAK.swap(heap_setup, Ordering::Relaxed);
             let n = sim.state.particles.len() as f64;
             for _ in 0..2 {
                 sim.step(f64::INFINITY).unwrap();
@@ -58,6 +107,7 @@ fn main() {
                 sim.step(f64::INFINITY).unwrap();
             }
             let wall = t0.elapsed().as_secs_f64();
+            let peak_steps = PEAK.load(Ordering::Relaxed);
             let t = sim.timings;
             let tot = t.total();
             if threads == 1 {
@@ -67,6 +117,12 @@ fn main() {
                 println!(
                     "peak memory growth: {:.0} bytes per particle (VmHWM)",
                     (peak_rss() - rss0) / n
+                );
+                println!(
+                    "live heap per particle: {:.0} bytes held between steps, peak {:.0} during the steps, peak {:.0} during the set-up",
+                    (heap_setup - heap0) as f64 / n,
+                    (peak_steps - heap0) as f64 / n,
+                    (peak_setup - heap0) as f64 / n,
                 );
             }
             println!(

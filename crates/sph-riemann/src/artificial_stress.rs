@@ -104,6 +104,24 @@ impl ArtificialStress {
         }
     }
 
+    /// The out-of-plane (hoop, θθ) component of R for an axisymmetric particle, in the
+    /// sign convention of [`Self::tensor`]: θ is a principal direction of an axisymmetric
+    /// stress, so the principal form takes −ε σ_θθ/ρ² where σ_θθ is tensile; the pressure
+    /// form is isotropic, −R_i from [`Self::r`].
+    #[inline]
+    pub fn hoop(&self, sigma_tt: f64, pressure: f64, density: f64) -> f64 {
+        match self.form {
+            ArtificialStressForm::Pressure => -self.r(pressure, density),
+            ArtificialStressForm::Principal => {
+                if sigma_tt > 0.0 {
+                    -self.epsilon * sigma_tt / (density * density)
+                } else {
+                    0.0
+                }
+            }
+        }
+    }
+
     /// True when the term is switched off (ε = 0).
     pub fn is_off(&self) -> bool {
         self.epsilon == 0.0

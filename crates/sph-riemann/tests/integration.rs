@@ -273,6 +273,12 @@ fn artificial_stress_hand_computed() {
     // Pure compression: nothing.
     let none: DMat2 = p.tensor(&DMat2::from_diagonal(DVec2::new(-1.0, -2.0)), 0.0, 1000.0);
     assert_eq!(none, DMat2::ZERO);
+    // The hoop component (RZ): the pressure form's −R whatever σ_θθ; the principal form
+    // −ε σ_θθ/ρ² in hoop tension only.
+    assert_relative_eq!(a.hoop(-5.0e6, -1.0e6, 1000.0), -0.2, max_relative = 1e-15);
+    assert_eq!(a.hoop(1.0e6, 1.0e6, 1000.0), 0.0);
+    assert_relative_eq!(p.hoop(1.0e6, 3.0e6, 1000.0), -0.2, max_relative = 1e-15);
+    assert_eq!(p.hoop(-1.0e6, -3.0e6, 1000.0), 0.0);
     assert!(
         ArtificialStress {
             epsilon: 0.0,

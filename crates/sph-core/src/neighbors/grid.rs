@@ -12,6 +12,7 @@
 //! keys searched by bisection, so memory stays O(N) for any point cloud.
 
 use super::criterion::check_inputs;
+use super::list::{CHUNK, Chunk, local_offset};
 use super::{NeighborList, NeighborSearch, PairCriterion};
 use crate::error::CoreError;
 use crate::vector::Vector;
@@ -20,8 +21,6 @@ use std::ops::Range;
 
 /// Default number of grid levels (radius ratios up to 2^(levels−1) are separated).
 pub const DEFAULT_MAX_LEVELS: usize = 5;
-/// Particles per parallel work item; results do not depend on it.
-const CHUNK: usize = 256;
 /// Cell coordinates beyond this (in cells) are refused: the domain is absurdly large
 /// for the smallest support radius.
 const MAX_CELL_COORD: f64 = 1.0e15;
@@ -107,11 +106,14 @@ impl<V: Vector> NeighborSearch<V> for CellList {
             .collect::<Result<_, _>>()?;
         self.stats = levels.iter().map(Level::stats).collect();
 
-        let parts: Vec<(Vec<usize>, Vec<u32>)> = (0..n.div_ceil(CHUNK))
+        // Each chunk of rows is searched by one task and kept as it is (no concatenation
+        // into one array, which would hold the indices twice at the peak).
+        let chunks: Vec<Chunk> = (0..n.div_ceil(CHUNK))
             .into_par_iter()
             .map(|c| {
                 let range = c * CHUNK..((c + 1) * CHUNK).min(n);
-                let mut counts = Vec::with_capacity(range.len());
+                let mut offsets = Vec::with_capacity(range.len() + 1);
+                offsets.push(0u32);
                 let mut indices = Vec::new();
                 let mut row = Vec::new();
                 for i in range {
@@ -120,25 +122,13 @@ impl<V: Vector> NeighborSearch<V> for CellList {
                         level.query(i, positions[i], radius[i], criterion, &mut row);
                     }
                     row.sort_unstable();
-                    counts.push(row.len());
                     indices.extend_from_slice(&row);
+                    offsets.push(local_offset(indices.len()));
                 }
-                (counts, indices)
+                Chunk::new(offsets, indices)
             })
             .collect();
-
-        let total: usize = parts.iter().map(|p| p.1.len()).sum();
-        let mut offsets = Vec::with_capacity(n + 1);
-        let mut indices = Vec::with_capacity(total);
-        offsets.push(0);
-        for (counts, idx) in parts {
-            for c in counts {
-                let last = *offsets.last().expect("offsets start with 0");
-                offsets.push(last + c);
-            }
-            indices.extend_from_slice(&idx);
-        }
-        Ok(NeighborList::from_raw(offsets, indices))
+        Ok(NeighborList::from_chunks(chunks))
     }
 }
 

@@ -1,78 +1,155 @@
-//! Neighbour lists in compressed sparse rows.
+//! Neighbour lists in compressed sparse rows, stored in chunks of rows.
 
-/// Neighbours of every particle in CSR form: the neighbours of `i` are
-/// `indices[offsets[i]..offsets[i + 1]]`, ascending, never `i` itself.
+/// Rows per chunk (a power of two, so the chunk of a row is a shift away).
+pub(crate) const CHUNK: usize = 256;
+const CHUNK_SHIFT: u32 = CHUNK.trailing_zeros();
+
+/// The rows `first .. first + len` of a list, in local CSR form.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub(crate) struct Chunk {
+    /// Local offsets into `indices`, one more than there are rows.
+    offsets: Vec<u32>,
+    indices: Vec<u32>,
+}
+
+impl Chunk {
+    /// A chunk from its local CSR arrays, trimmed to their lengths.
+    pub(crate) fn new(mut offsets: Vec<u32>, mut indices: Vec<u32>) -> Self {
+        debug_assert_eq!(offsets.first(), Some(&0));
+        debug_assert_eq!(*offsets.last().unwrap_or(&0) as usize, indices.len());
+        offsets.shrink_to_fit();
+        indices.shrink_to_fit();
+        Self { offsets, indices }
+    }
+
+    fn rows(&self) -> usize {
+        self.offsets.len() - 1
+    }
+}
+
+/// Neighbours of every particle in compressed sparse rows (CSR): the neighbours of `i`,
+/// ascending, never `i` itself.
+///
+/// The rows are kept in chunks of 256 particles, each with its own CSR arrays (local
+/// `u32` offsets), exactly as the parallel search produces them: the list is never copied
+/// into one array, so building it needs no second copy of the neighbour indices (the
+/// largest array of a step), and it holds 4 bytes per index plus 4 per particle.
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub struct NeighborList {
-    offsets: Vec<usize>,
-    indices: Vec<u32>,
+    chunks: Vec<Chunk>,
+    len: usize,
 }
 
 impl NeighborList {
     /// Builds from per-particle rows (each sorted ascending, self excluded).
     pub fn from_rows(rows: Vec<Vec<u32>>) -> Self {
-        let mut offsets = Vec::with_capacity(rows.len() + 1);
-        offsets.push(0);
-        let total: usize = rows.iter().map(Vec::len).sum();
-        let mut indices = Vec::with_capacity(total);
-        for r in rows {
-            indices.extend_from_slice(&r);
-            offsets.push(indices.len());
-        }
-        Self { offsets, indices }
+        let len = rows.len();
+        let chunks = rows
+            .chunks(CHUNK)
+            .map(|block| {
+                let mut offsets = Vec::with_capacity(block.len() + 1);
+                offsets.push(0u32);
+                let total: usize = block.iter().map(Vec::len).sum();
+                let mut indices = Vec::with_capacity(total);
+                for r in block {
+                    indices.extend_from_slice(r);
+                    offsets.push(local_offset(indices.len()));
+                }
+                Chunk::new(offsets, indices)
+            })
+            .collect();
+        Self { chunks, len }
     }
 
-    /// Builds from raw CSR arrays. `offsets` has one more entry than there are particles.
-    pub(crate) fn from_raw(offsets: Vec<usize>, indices: Vec<u32>) -> Self {
-        debug_assert_eq!(*offsets.last().unwrap_or(&0), indices.len());
-        Self { offsets, indices }
+    /// Builds from chunks of `CHUNK` rows each (the last may be shorter).
+    pub(crate) fn from_chunks(chunks: Vec<Chunk>) -> Self {
+        debug_assert!(chunks.iter().rev().skip(1).all(|c| c.rows() == CHUNK));
+        let len = chunks.iter().map(Chunk::rows).sum();
+        Self { chunks, len }
     }
 
     /// Number of particles.
     pub fn len(&self) -> usize {
-        self.offsets.len().saturating_sub(1)
+        self.len
     }
     /// True when the list covers no particles.
     pub fn is_empty(&self) -> bool {
-        self.len() == 0
+        self.len == 0
     }
     /// The neighbours of particle `i`, ascending.
     #[inline]
     pub fn neighbors(&self, i: usize) -> &[u32] {
-        &self.indices[self.offsets[i]..self.offsets[i + 1]]
+        let c = &self.chunks[i >> CHUNK_SHIFT];
+        let k = i & (CHUNK - 1);
+        &c.indices[c.offsets[k] as usize..c.offsets[k + 1] as usize]
     }
     /// Number of neighbours of particle `i`.
     #[inline]
     pub fn count(&self, i: usize) -> usize {
-        self.offsets[i + 1] - self.offsets[i]
+        let c = &self.chunks[i >> CHUNK_SHIFT];
+        let k = i & (CHUNK - 1);
+        (c.offsets[k + 1] - c.offsets[k]) as usize
     }
     /// Total number of (directed) pairs.
     pub fn total_pairs(&self) -> usize {
-        self.indices.len()
+        self.chunks.iter().map(|c| c.indices.len()).sum()
     }
     /// Mean neighbour count (0 for no particles).
     pub fn mean_count(&self) -> f64 {
         if self.is_empty() {
             0.0
         } else {
-            self.indices.len() as f64 / self.len() as f64
+            self.total_pairs() as f64 / self.len() as f64
         }
     }
     /// Largest neighbour count.
     pub fn max_count(&self) -> usize {
         (0..self.len()).map(|i| self.count(i)).max().unwrap_or(0)
     }
-    /// The CSR offsets (length `len() + 1`).
-    pub fn offsets(&self) -> &[usize] {
-        &self.offsets
-    }
-    /// The CSR column indices.
-    pub fn indices(&self) -> &[u32] {
-        &self.indices
-    }
     /// Heap memory held, in bytes.
     pub fn memory_bytes(&self) -> usize {
-        self.offsets.capacity() * std::mem::size_of::<usize>()
-            + self.indices.capacity() * std::mem::size_of::<u32>()
+        self.chunks.capacity() * std::mem::size_of::<Chunk>()
+            + self
+                .chunks
+                .iter()
+                .map(|c| (c.offsets.capacity() + c.indices.capacity()) * 4)
+                .sum::<usize>()
+    }
+}
+
+/// A chunk-local offset. A chunk of 256 rows would need rows of 16 million neighbours
+/// each to overflow it.
+#[inline]
+pub(crate) fn local_offset(n: usize) -> u32 {
+    u32::try_from(n).expect("a chunk of 256 rows holds fewer than 2^32 neighbour indices")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn rows_across_chunk_boundaries_read_back() {
+        let n = 2 * CHUNK + 7;
+        let rows: Vec<Vec<u32>> = (0..n)
+            .map(|i| (0..(i % 5) as u32).map(|k| k * 3 + 1).collect())
+            .collect();
+        let list = NeighborList::from_rows(rows.clone());
+        assert_eq!(list.len(), n);
+        for (i, r) in rows.iter().enumerate() {
+            assert_eq!(list.neighbors(i), r.as_slice());
+            assert_eq!(list.count(i), r.len());
+        }
+        assert_eq!(list.total_pairs(), rows.iter().map(Vec::len).sum::<usize>());
+        assert_eq!(list.max_count(), 4);
+        assert!(list.memory_bytes() >= 4 * (list.total_pairs() + n));
+    }
+
+    #[test]
+    fn an_empty_list_has_no_rows() {
+        let list = NeighborList::from_rows(Vec::new());
+        assert!(list.is_empty());
+        assert_eq!(list.mean_count(), 0.0);
+        assert_eq!(list.max_count(), 0);
     }
 }

@@ -45,7 +45,7 @@
 //! Al → basalt impact with ε = 0.2 collapsed at ~4 µs.
 
 use crate::solver::config::EnergyForm;
-use crate::solver::derivatives::{Gradients, Rates};
+use crate::solver::derivatives::Rates;
 use serde::{Deserialize, Serialize};
 use sph_core::{Dimension, Particles, Vector};
 
@@ -119,10 +119,6 @@ pub(crate) struct HoopInput<'a, D: Dimension> {
     pub damage: &'a [f64],
     /// Damaged pressure P_D.
     pub pressure: &'a [f64],
-    /// Shear modulus G.
-    pub shear_modulus: &'a [f64],
-    /// Gradients of the stage (for the stress rate).
-    pub grads: Option<&'a [Gradients<D>]>,
     pub energy: EnergyForm,
     /// The kernel-smoothed radius R̂ (the denominators use ρ R̂, finite on the axis).
     pub smoothed_radius: &'a SmoothedRadius,
@@ -151,16 +147,18 @@ pub(crate) fn add_hoop_terms<D: Dimension>(input: &HoopInput<'_, D>, rates: &mut
         if input.energy == EnergyForm::Study {
             out.de += sigma_tt * v_r / (rho * r_hat);
         }
-        // The stress rate with the hoop strain rate L_θθ = v_r/r.
-        if !input.stress.is_empty()
-            && input.shear_modulus[i] > 0.0
-            && let Some(gr) = input.grads
-        {
-            let mut l = D::embed(&gr[i].strain_velocity);
-            l.z_axis.z = v_r / r_hat;
-            out.ds = sph_strength::jaumann_rate(&input.stress[i], &l, input.shear_modulus[i]);
-        }
     }
+}
+
+/// The hoop strain rate L_θθ = v_r/R̂ of particle i (R̂ for r, finite on the axis), which
+/// the deviatoric stress rate adds to the in-plane velocity gradient in RZ.
+pub(crate) fn hoop_strain_rate<D: Dimension>(
+    p: &Particles<D>,
+    i: usize,
+    smoothed_radius: &SmoothedRadius,
+) -> f64 {
+    let (r, h) = (radius(p.position[i]), p.smoothing_length[i]);
+    p.velocity[i].component(0) / smoothed_radius.at(r, h)
 }
 
 /// The kernel-smoothed radius R̂(r, h) = ∫ |x'| W(x − x', h) dA' of the (r, z) plane, which

@@ -27,13 +27,21 @@ use sph_riemann::{PairInterface, SideState, interface_velocity, reconstruct};
 pub(crate) struct Gradients<D: Dimension> {
     pub velocity: D::Tensor,
     pub pressure: D::Vector,
-    /// M_i⁻ᵀ, the linear gradient correction (identity when off or singular).
-    pub correction: D::Tensor,
     /// The grad-h factor Ω_i = 1 + h_i/(dρ_i) Σ_j m_j ∂W(r_ij, h_i)/∂h.
     pub omega: f64,
     /// The velocity gradient that drives the deviatoric stress (linearly corrected when
-    /// `strain_rate_correction` is on).
+    /// `strain_rate_correction` is on). The Jaumann rate is formed from it when the stress
+    /// is updated, so pass 2 does not hold a stress rate per particle.
     pub strain_velocity: D::Tensor,
+}
+
+/// The result of pass 1: the gradients, and the linear gradient corrections M_i⁻ᵀ
+/// (identity where M is singular) only when `gradient_correction` is on — otherwise
+/// empty, which saves a tensor per particle (72 bytes in 3-D) at the stage's memory peak.
+#[derive(Clone, Debug)]
+pub(crate) struct GradientSet<D: Dimension> {
+    pub each: Vec<Gradients<D>>,
+    pub correction: Vec<D::Tensor>,
 }
 
 /// Per-particle time derivatives and time-step ingredients (pass 2).
@@ -50,8 +58,6 @@ pub(crate) struct Rates<D: Dimension> {
     /// W_i = Σ_j m_j F_ij (v*_ij·∇W): with it de/dt = W_i − v_i·(dv/dt) in the compatible
     /// form, which lets the final RK2 update use the time-centred velocity.
     pub work: f64,
-    /// Jaumann rate of the deviatoric stress, dS/dt (zero for fluids).
-    pub ds: sph_core::glam::DMat3,
     /// RZ only: the pair sums' own estimate of ∂r/∂r, ŝ_i = r_i Σ_j V_j ∂_r W_ij plus
     /// Σ_j V_j r_j ∂_r W_ij with V_j = m_j/(ρ_j R̂_j), which the hoop force uses so that a
     /// uniform stress is in equilibrium also next to the axis (axisymmetric.rs); 1 in
@@ -93,7 +99,7 @@ pub(crate) fn gradients<D: Dimension, P: PairKernel<D>>(
     pk: &P,
     correct: bool,
     correct_strain: bool,
-) -> Vec<Gradients<D>> {
+) -> GradientSet<D> {
     let rz = !ext.radius.is_empty();
     // The 2-D density of the pair sums: η = ρ r in RZ (ring masses per radian).
     let eta = |k: usize| {
@@ -103,59 +109,69 @@ pub(crate) fn gradients<D: Dimension, P: PairKernel<D>>(
             ext.density[k]
         }
     };
-    (0..ext.n_real)
-        .into_par_iter()
-        .map(|i| {
-            let (xi, vi, pi) = (ext.position[i], ext.velocity[i], ext.pressure[i]);
-            let mut l = D::Tensor::ZERO;
-            let mut gp = D::Vector::ZERO;
-            let mut m = D::Tensor::ZERO;
-            let d = D::DIM as f64;
-            let hi = pk.h(i);
-            // Self term of Σ m ∂W/∂h: ∂W(0,h)/∂h = −d W(0,h)/h.
-            let mut dwdh = -d * ext.mass[i] * pk.w(i, i, D::Vector::ZERO) / hi;
-            for &j in list.neighbors(i) {
-                let j = j as usize;
-                let dx = ext.position[j] - xi;
-                let g = pk.grad(i, j, -dx);
-                let vol = ext.mass[j] / eta(j);
-                l += D::Tensor::outer(ext.velocity[j] - vi, g) * vol;
-                gp += g * ((ext.pressure[j] - pi) * vol);
-                m += D::Tensor::outer(dx, g) * vol;
-                dwdh += ext.mass[j] * pk.dw_dh_own(i, dx);
-            }
-            let omega = 1.0 + hi / (d * eta(i)) * dwdh;
-            // L = L_raw M⁻¹ and ∇P = M⁻ᵀ ∇P_raw are exact for linear fields. A nearly
-            // singular M (a particle with too few neighbours) keeps the raw estimates.
-            // M⁻¹ when either use wants it: the continuity equation and reconstruction
-            // (`correct`), and the strain rate that drives the deviatoric stress.
-            let inv = if correct || correct_strain {
-                well_conditioned_inverse(&m)
-            } else {
-                None
-            };
-            let strain_velocity = match (correct_strain, inv) {
-                (true, Some(mi)) => l.mul_tensor(&mi),
-                _ => l,
-            };
-            match (correct, inv) {
-                (true, Some(mi)) => Gradients {
+    let per_particle = (0..ext.n_real).into_par_iter().map(|i| {
+        let (xi, vi, pi) = (ext.position[i], ext.velocity[i], ext.pressure[i]);
+        let mut l = D::Tensor::ZERO;
+        let mut gp = D::Vector::ZERO;
+        let mut m = D::Tensor::ZERO;
+        let d = D::DIM as f64;
+        let hi = pk.h(i);
+        // Self term of Σ m ∂W/∂h: ∂W(0,h)/∂h = −d W(0,h)/h.
+        let mut dwdh = -d * ext.mass[i] * pk.w(i, i, D::Vector::ZERO) / hi;
+        for &j in list.neighbors(i) {
+            let j = j as usize;
+            let dx = ext.position[j] - xi;
+            let g = pk.grad(i, j, -dx);
+            let vol = ext.mass[j] / eta(j);
+            l += D::Tensor::outer(ext.velocity[j] - vi, g) * vol;
+            gp += g * ((ext.pressure[j] - pi) * vol);
+            m += D::Tensor::outer(dx, g) * vol;
+            dwdh += ext.mass[j] * pk.dw_dh_own(i, dx);
+        }
+        let omega = 1.0 + hi / (d * eta(i)) * dwdh;
+        // L = L_raw M⁻¹ and ∇P = M⁻ᵀ ∇P_raw are exact for linear fields. A nearly
+        // singular M (a particle with too few neighbours) keeps the raw estimates.
+        // M⁻¹ when either use wants it: the continuity equation and reconstruction
+        // (`correct`), and the strain rate that drives the deviatoric stress.
+        let inv = if correct || correct_strain {
+            well_conditioned_inverse(&m)
+        } else {
+            None
+        };
+        let strain_velocity = match (correct_strain, inv) {
+            (true, Some(mi)) => l.mul_tensor(&mi),
+            _ => l,
+        };
+        match (correct, inv) {
+            (true, Some(mi)) => (
+                Gradients {
                     velocity: l.mul_tensor(&mi),
                     pressure: mi.transpose().mul_vec(gp),
-                    correction: mi.transpose(),
                     omega,
                     strain_velocity,
                 },
-                _ => Gradients {
+                mi.transpose(),
+            ),
+            _ => (
+                Gradients {
                     velocity: l,
                     pressure: gp,
-                    correction: D::Tensor::IDENTITY,
                     omega,
                     strain_velocity,
                 },
-            }
-        })
-        .collect()
+                D::Tensor::IDENTITY,
+            ),
+        }
+    });
+    if correct {
+        let (each, correction) = per_particle.unzip();
+        GradientSet { each, correction }
+    } else {
+        GradientSet {
+            each: per_particle.map(|(g, _)| g).collect(),
+            correction: Vec::new(),
+        }
+    }
 }
 
 /// M⁻¹ if M is invertible and not too far from the identity (condition number of its
@@ -175,10 +191,8 @@ pub(crate) fn rates<D: Dimension, P: PairKernel<D>>(
     ext: &Extended<D>,
     list: &NeighborList,
     pk: &P,
-    grads: Option<&[Gradients<D>]>,
+    grads: Option<&GradientSet<D>>,
     scheme: &SchemeConfig,
-    shear_modulus: &[f64],
-    intact_stress: &[sph_core::glam::DMat3],
 ) -> Vec<Rates<D>> {
     let visc = scheme.viscosity;
     let solid = !ext.stress.is_empty();
@@ -215,10 +229,18 @@ pub(crate) fn rates<D: Dimension, P: PairKernel<D>>(
                 approach: 0.0,
                 dv_boundary: D::Vector::ZERO,
                 work: 0.0,
-                ds: sph_core::glam::DMat3::ZERO,
                 hoop_gauge: 1.0,
             };
             let etai = rhoi * smooth_r(i);
+            // RZ: the hoop component R_θθ of particle i's artificial stress, and the sum that
+            // its hoop force balances (below the loop).
+            let r_tt = if rz && use_astress {
+                let s_tt = if solid { ext.stress[i].z_axis.z } else { 0.0 };
+                astress.hoop(s_tt - pi, pi, rhoi)
+            } else {
+                0.0
+            };
+            let mut astress_hoop_sum = 0.0;
             for &j in list.neighbors(i) {
                 let j = j as usize;
                 let r = xi - ext.position[j];
@@ -242,7 +264,7 @@ pub(crate) fn rates<D: Dimension, P: PairKernel<D>>(
                 // Left (j) and right (i) states along r̂, reconstructed to the midpoint.
                 let (mut ui, mut uj) = (vi.dot(r_hat), vj.dot(r_hat));
                 let (mut pfi, mut pfj) = (pi, pj);
-                if let Some(gr) = grads {
+                if let Some(gr) = grads.map(|g| &g.each) {
                     let gi = &gr[i];
                     let src = &gr[ext.source[j] as usize];
                     // A ghost's gradients are its source's, mapped: M L Mᵀ and M ∇P.
@@ -303,17 +325,17 @@ pub(crate) fn rates<D: Dimension, P: PairKernel<D>>(
                     * (r_bar / (ri * rj));
                 // Artificial stress: m_j f_ij^n (R_i + R_j)·∇_i W (paper §2.3; R from the
                 // total stress, repulsive in tension).
-                let a_force = if use_astress {
+                let (a_force, f_astress) = if use_astress {
                     let r_sum = ext.astress[i] * (1.0 / ri) + ext.astress[j] * (1.0 / rj);
-                    if r_sum.double_dot(&r_sum) > 0.0 {
+                    if r_sum.double_dot(&r_sum) > 0.0 || r_tt != 0.0 {
                         let dp = 0.5 * (ext.spacing0[i] + ext.spacing0[j]);
                         let f = (pk.w(i, j, r) / pk.w_at(i, j, r_hat, dp)).powi(astress.exponent);
-                        r_sum.mul_vec(g) * (mj * f)
+                        (r_sum.mul_vec(g) * (mj * f), f)
                     } else {
-                        D::Vector::ZERO
+                        (D::Vector::ZERO, 0.0)
                     }
                 } else {
-                    D::Vector::ZERO
+                    (D::Vector::ZERO, 0.0)
                 };
                 // The pressure part of the pair force: the particles' pressures (the
                 // study's σ_i + σ_j), or twice the pair's Riemann star pressure.
@@ -348,10 +370,14 @@ pub(crate) fn rates<D: Dimension, P: PairKernel<D>>(
                     let vx = mj / etaj * g.component(0);
                     gauge_a += vx;
                     gauge_g += vx * rj;
+                    // 1/r_i + 1/r_j = 2/r_j + (r_j − r_i)/(r_i r_j): the first part is the
+                    // Cartesian pair term of R/r (zero for a uniform R on a complete
+                    // lattice), the second the geometric part the hoop force cancels.
+                    astress_hoop_sum += mj * f_astress * (rj - ri) / (ri * rj) * g.component(0);
                 }
                 // The continuity equation uses the corrected gradient when enabled.
                 let gc = match grads {
-                    Some(gr) if scheme.gradient_correction => gr[i].correction.mul_vec(g),
+                    Some(gr) if !gr.correction.is_empty() => gr.correction[i].mul_vec(g),
                     _ => g,
                 };
                 let dvs = (vi - v_star).dot(gc);
@@ -392,7 +418,7 @@ pub(crate) fn rates<D: Dimension, P: PairKernel<D>>(
             if scheme.grad_h
                 && let Some(gr) = grads
             {
-                out.drho /= gr[i].omega.clamp(0.5, 2.0);
+                out.drho /= gr.each[i].omega.clamp(0.5, 2.0);
             }
             if rz {
                 // ŝ = r_i Σ V_j ∂_r W + Σ V_j r_j ∂_r W balances the pair sums' estimate of
@@ -403,19 +429,20 @@ pub(crate) fn rates<D: Dimension, P: PairKernel<D>>(
                 // there the gauge is the exact ∂r/∂r = 1, blended smoothly. axisymmetric.rs.
                 let keep = axis_zone(ri / pk.h(i));
                 out.hoop_gauge = keep * (ri * gauge_a + gauge_g) + (1.0 - keep);
-            }
-            // dS/dt = 2G ε̇' + ΩS − SΩ with the particle's velocity gradient embedded in 3-D
-            // (1-D uniaxial and 2-D plane strain: the out-of-plane rates are zero).
-            if solid
-                && shear_modulus[i] > 0.0
-                && let Some(gr) = grads
-            {
-                // The rate of the intact stress S (damage scales it only where it acts).
-                out.ds = sph_strength::jaumann_rate(
-                    &intact_stress[i],
-                    &D::embed(&gr[i].strain_velocity),
-                    shear_modulus[i],
-                );
+                // The hoop part of the artificial stress: −R_θθ,i Σ_j m_j f_ij^n (r_j − r_i)/
+                // (r_i r_j) ∂_r W_ij along r, so that a uniform R exerts no force, as in
+                // Cartesian runs (without it a uniform tension pulled rings toward the axis
+                // at (0.25–0.75) ε|P|/(ρ r)). Its work goes to the internal energy: in the
+                // compatible form through de = W − v·(dv/dt), in the study's form here.
+                let a_r = -r_tt * astress_hoop_sum;
+                if a_r != 0.0 {
+                    let mut a = D::Vector::ZERO;
+                    a.set_component(0, a_r);
+                    out.dv += a;
+                    if scheme.energy == EnergyForm::Study {
+                        out.de -= vi.component(0) * a_r;
+                    }
+                }
             }
             out
         })

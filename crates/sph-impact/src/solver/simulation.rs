@@ -2,7 +2,8 @@
 //! second-order Runge–Kutta (midpoint) method and the adaptive CFL step (paper §2.5).
 
 use crate::solver::axisymmetric::{
-    Geometry, HoopInput, SmoothedRadius, add_hoop_terms, radius, reference_spacing,
+    Geometry, HoopInput, SmoothedRadius, add_hoop_terms, hoop_strain_rate, radius,
+    reference_spacing,
 };
 use crate::solver::boundary::Boundary;
 use crate::solver::config::{DensityForm, EnergyForm, SchemeConfig, SmoothingMode};
@@ -10,7 +11,7 @@ use crate::solver::damage::{
     DamageEvents, DamageRate, DamageStageInput, advance_damage, damage_of, damage_rates,
     damaged_pressure, fragment_densities,
 };
-use crate::solver::derivatives::{Gradients, Rates, gradients, rates, summation_density};
+use crate::solver::derivatives::{GradientSet, Rates, gradients, rates, summation_density};
 use crate::solver::error::SolverError;
 use crate::solver::material::Material;
 use crate::solver::pair_kernel::{ScalarPairKernel, TensorPairKernel, equivalent_radius};
@@ -83,7 +84,7 @@ pub struct StepInfo {
 
 struct Stage<D: Dimension> {
     rates: Vec<Rates<D>>,
-    grads: Option<Vec<Gradients<D>>>,
+    grads: Option<GradientSet<D>>,
     sound_speed: Vec<f64>,
     pressure: Vec<f64>,
     /// Shear modulus per particle (0 for fluids).
@@ -422,15 +423,7 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
             let pk = ScalarPairKernel::new(self.kernel, &ext.h, D::DIM);
             let g = need_grads.then(|| gradients(&ext, &list, &pk, correct, correct_strain));
             let t3 = Instant::now();
-            let r = rates(
-                &ext,
-                &list,
-                &pk,
-                g.as_deref(),
-                &self.scheme,
-                &shear_modulus,
-                &state.stress,
-            );
+            let r = rates(&ext, &list, &pk, g.as_ref(), &self.scheme);
             (g, r, t3)
         } else {
             let pk = TensorPairKernel {
@@ -440,15 +433,7 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
             };
             let g = need_grads.then(|| gradients(&ext, &list, &pk, correct, correct_strain));
             let t3 = Instant::now();
-            let r = rates(
-                &ext,
-                &list,
-                &pk,
-                g.as_deref(),
-                &self.scheme,
-                &shear_modulus,
-                &state.stress,
-            );
+            let r = rates(&ext, &list, &pk, g.as_ref(), &self.scheme);
             (g, r, t3)
         };
         let mut rates_out = rates_out;
@@ -459,8 +444,6 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
                     stress: &state.stress,
                     damage: &damage,
                     pressure: &pressure_d,
-                    shear_modulus: &shear_modulus,
-                    grads: grads.as_deref(),
                     energy: self.scheme.energy,
                     smoothed_radius: self.smoothed_radius.as_ref().expect("RZ has the table"),
                 },
@@ -527,16 +510,30 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
     }
 
     /// One RK2 (midpoint) step, at most `max_dt` long.
+    ///
+    /// On an error before the update (a stage that fails, a collapsed time step) the state
+    /// is left as it was; when the updated state fails the check (a non-finite or
+    /// non-positive value, [`SolverError::Unphysical`]) the state is that rejected update,
+    /// for post-mortem output. The step works on the state in place rather than on a copy
+    /// of it: one state fewer at the step's memory peak.
     pub fn step(&mut self, max_dt: f64) -> Result<StepInfo, SolverError> {
-        let mut s0_state = self.state.clone();
-        let (s0, _) = self.stage(&mut s0_state)?;
+        let mut s0_state = std::mem::take(&mut self.state);
+        let (s0, _) = match self.stage(&mut s0_state) {
+            Ok(stage) => stage,
+            Err(e) => {
+                self.state = s0_state;
+                return Err(e);
+            }
+        };
         let vote = self.vote(&s0_state, &s0);
         let dt = vote.dt.min(max_dt);
         // The floor applies to the vote, not to a step shortened to land on an end time.
         let floor = self.first_dt.get_or_insert(vote.dt).to_owned() * self.scheme.dt_floor_fraction;
         if !(dt > 0.0 && dt.is_finite()) || vote.dt < floor {
+            let step = s0_state.step;
+            self.state = s0_state;
             return Err(SolverError::TimestepCollapse {
-                step: self.state.step,
+                step,
                 dt: vote.dt,
                 min: floor,
                 id: vote.particle_id,
@@ -562,7 +559,13 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
         // its own (peak memory per particle).
         drop(s0);
         self.timings.integration += t0.elapsed().as_secs_f64();
-        let (s1, _) = self.stage(&mut half)?;
+        let (s1, _) = match self.stage(&mut half) {
+            Ok(stage) => stage,
+            Err(e) => {
+                self.state = s0_state;
+                return Err(e);
+            }
+        };
         let t1 = Instant::now();
         let mut next = s0_state;
         // x_{n+1} = x_n + dt v_{1/2}; the other fields with the midpoint rates.
@@ -612,8 +615,9 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
         }
         next.time += dt;
         next.step += 1;
-        self.check(&next)?;
+        let checked = self.check(&next);
         self.state = next;
+        checked?;
         self.timings.integration += t1.elapsed().as_secs_f64();
         Ok(StepInfo {
             dt,
@@ -743,7 +747,13 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
                         } else {
                             1.0 / h_src[i].sym_eigen().values[0]
                         };
-                        asph_update(&y.h_tensor[i], &grads[i].velocity, dt, target, max_aspect)
+                        asph_update(
+                            &y.h_tensor[i],
+                            &grads.each[i].velocity,
+                            dt,
+                            target,
+                            max_aspect,
+                        )
                     })
                     .collect();
                 for (i, (h, radius)) in new.into_iter().enumerate() {
@@ -753,7 +763,7 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
             }
         }
         if !y.stress.is_empty() {
-            self.update_stress(y, stage, dt);
+            self.update_stress(y, stage, dt, rate_state);
         }
     }
 
@@ -803,22 +813,38 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
             .collect()
     }
 
-    /// S ← S + dt dS/dt (Jaumann rate from the stage), then the radial return onto the
-    /// yield surface at the stage's pressure; the plastic strain grows by
-    /// (√(3J2_trial) − Y)/(3G) (Wilkins 1964).
-    fn update_stress(&self, y: &mut State<D>, stage: &Stage<D>, dt: f64) {
+    /// S ← S + dt dS/dt, then the radial return onto the yield surface at the stage's
+    /// pressure; the plastic strain grows by (√(3J2_trial) − Y)/(3G) (Wilkins 1964).
+    /// dS/dt = 2G ε̇' + ΩS − SΩ (Jaumann) is formed here from the stage's strain-rate
+    /// velocity gradient and the stress of `rate_state`, the state the stage was evaluated
+    /// at, with the particle's velocity gradient embedded in 3-D (1-D uniaxial and 2-D
+    /// plane strain: the out-of-plane rates are zero; RZ: L_θθ = v_r/r).
+    fn update_stress(&self, y: &mut State<D>, stage: &Stage<D>, dt: f64, rate_state: &State<D>) {
+        let rz = self.scheme.geometry == Geometry::Axisymmetric;
+        let grads = stage.grads.as_ref();
         let updated: Vec<(sph_core::glam::DMat3, f64, f64)> = (0..y.particles.len())
             .into_par_iter()
             .map(|i| {
                 let Some(model) = &self.materials[y.particles.material[i] as usize].strength else {
                     return (sph_core::glam::DMat3::ZERO, y.plastic_strain[i], 0.0);
                 };
-                let trial = y.stress[i] + stage.rates[i].ds * dt;
+                let g = stage.shear_modulus[i];
+                // The rate of the intact stress S (damage scales it only where it acts).
+                let ds = match grads {
+                    Some(gr) if g > 0.0 => {
+                        let mut l = D::embed(&gr.each[i].strain_velocity);
+                        if rz {
+                            let table = self.smoothed_radius.as_ref().expect("RZ has the table");
+                            l.z_axis.z = hoop_strain_rate(&rate_state.particles, i, table);
+                        }
+                        sph_strength::jaumann_rate(&rate_state.stress[i], &l, g)
+                    }
+                    _ => sph_core::glam::DMat3::ZERO,
+                };
+                let trial = y.stress[i] + ds * dt;
                 let st = self.strength_state(y, i, stage.pressure[i]);
                 let ret = sph_strength::radial_return(trial, model.yield_strength(&st));
-                let dep = ret
-                    .plastic_strain_increment(stage.shear_modulus[i])
-                    .unwrap_or(0.0);
+                let dep = ret.plastic_strain_increment(g).unwrap_or(0.0);
                 (ret.stress, y.plastic_strain[i] + dep, dep / dt)
             })
             .collect();

@@ -33,6 +33,25 @@ pub struct State<D: Dimension> {
     pub step: u64,
 }
 
+impl<D: Dimension> Default for State<D> {
+    /// No particles, at t = 0 (what [`crate::Simulation::step`] leaves in place while it
+    /// works on the state).
+    fn default() -> Self {
+        State {
+            particles: Particles::default(),
+            h_tensor: Vec::new(),
+            spacing0: Vec::new(),
+            stress: Vec::new(),
+            plastic_strain: Vec::new(),
+            plastic_strain_rate: Vec::new(),
+            damage_state: Vec::new(),
+            damage_index: Vec::new(),
+            time: 0.0,
+            step: 0,
+        }
+    }
+}
+
 /// Real particles followed by ghosts, with everything a pair term reads.
 #[derive(Clone, Debug, Default)]
 pub(crate) struct Extended<D: Dimension> {
