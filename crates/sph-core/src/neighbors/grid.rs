@@ -12,7 +12,7 @@
 //! keys searched by bisection, so memory stays O(N) for any point cloud.
 
 use super::criterion::check_inputs;
-use super::list::{CHUNK, Chunk, local_offset};
+use super::list::{CHUNK, Chunk};
 use super::{NeighborList, NeighborSearch, PairCriterion};
 use crate::error::CoreError;
 use crate::vector::Vector;
@@ -112,9 +112,7 @@ impl<V: Vector> NeighborSearch<V> for CellList {
             .into_par_iter()
             .map(|c| {
                 let range = c * CHUNK..((c + 1) * CHUNK).min(n);
-                let mut offsets = Vec::with_capacity(range.len() + 1);
-                offsets.push(0u32);
-                let mut indices = Vec::new();
+                let mut chunk = Chunk::with_rows(range.len());
                 let mut row = Vec::new();
                 for i in range {
                     row.clear();
@@ -122,10 +120,9 @@ impl<V: Vector> NeighborSearch<V> for CellList {
                         level.query(i, positions[i], radius[i], criterion, &mut row);
                     }
                     row.sort_unstable();
-                    indices.extend_from_slice(&row);
-                    offsets.push(local_offset(indices.len()));
+                    chunk.push_row(&row);
                 }
-                Chunk::new(offsets, indices)
+                chunk.finish()
             })
             .collect();
         Ok(NeighborList::from_chunks(chunks))

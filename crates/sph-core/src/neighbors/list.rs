@@ -4,7 +4,7 @@
 pub(crate) const CHUNK: usize = 256;
 const CHUNK_SHIFT: u32 = CHUNK.trailing_zeros();
 
-/// The rows `first .. first + len` of a list, in local CSR form.
+/// `CHUNK` consecutive rows of a list (the last chunk may hold fewer), in local CSR form.
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub(crate) struct Chunk {
     /// Local offsets into `indices`, one more than there are rows.
@@ -13,13 +13,29 @@ pub(crate) struct Chunk {
 }
 
 impl Chunk {
-    /// A chunk from its local CSR arrays, trimmed to their lengths.
-    pub(crate) fn new(mut offsets: Vec<u32>, mut indices: Vec<u32>) -> Self {
-        debug_assert_eq!(offsets.first(), Some(&0));
-        debug_assert_eq!(*offsets.last().unwrap_or(&0) as usize, indices.len());
-        offsets.shrink_to_fit();
-        indices.shrink_to_fit();
-        Self { offsets, indices }
+    /// An empty chunk that will receive `rows` rows through [`Self::push_row`].
+    pub(crate) fn with_rows(rows: usize) -> Self {
+        let mut offsets = Vec::with_capacity(rows + 1);
+        offsets.push(0);
+        Self {
+            offsets,
+            indices: Vec::new(),
+        }
+    }
+
+    /// Appends the next row (sorted ascending, self excluded).
+    pub(crate) fn push_row(&mut self, row: &[u32]) {
+        self.indices.extend_from_slice(row);
+        let end = u32::try_from(self.indices.len())
+            .expect("a chunk of 256 rows holds fewer than 2^32 neighbour indices");
+        self.offsets.push(end);
+    }
+
+    /// The chunk trimmed to its length (the indices grew by doubling).
+    pub(crate) fn finish(mut self) -> Self {
+        self.offsets.shrink_to_fit();
+        self.indices.shrink_to_fit();
+        self
     }
 
     fn rows(&self) -> usize {
@@ -47,15 +63,11 @@ impl NeighborList {
         let chunks = rows
             .chunks(CHUNK)
             .map(|block| {
-                let mut offsets = Vec::with_capacity(block.len() + 1);
-                offsets.push(0u32);
-                let total: usize = block.iter().map(Vec::len).sum();
-                let mut indices = Vec::with_capacity(total);
+                let mut chunk = Chunk::with_rows(block.len());
                 for r in block {
-                    indices.extend_from_slice(r);
-                    offsets.push(local_offset(indices.len()));
+                    chunk.push_row(r);
                 }
-                Chunk::new(offsets, indices)
+                chunk.finish()
             })
             .collect();
         Self { chunks, len }
@@ -115,13 +127,6 @@ impl NeighborList {
                 .map(|c| (c.offsets.capacity() + c.indices.capacity()) * 4)
                 .sum::<usize>()
     }
-}
-
-/// A chunk-local offset. A chunk of 256 rows would need rows of 16 million neighbours
-/// each to overflow it.
-#[inline]
-pub(crate) fn local_offset(n: usize) -> u32 {
-    u32::try_from(n).expect("a chunk of 256 rows holds fewer than 2^32 neighbour indices")
 }
 
 #[cfg(test)]

@@ -520,10 +520,7 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
         let mut s0_state = std::mem::take(&mut self.state);
         let (s0, _) = match self.stage(&mut s0_state) {
             Ok(stage) => stage,
-            Err(e) => {
-                self.state = s0_state;
-                return Err(e);
-            }
+            Err(e) => return Err(self.put_back(s0_state, e)),
         };
         let vote = self.vote(&s0_state, &s0);
         let dt = vote.dt.min(max_dt);
@@ -531,14 +528,16 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
         let floor = self.first_dt.get_or_insert(vote.dt).to_owned() * self.scheme.dt_floor_fraction;
         if !(dt > 0.0 && dt.is_finite()) || vote.dt < floor {
             let step = s0_state.step;
-            self.state = s0_state;
-            return Err(SolverError::TimestepCollapse {
-                step,
-                dt: vote.dt,
-                min: floor,
-                id: vote.particle_id,
-                reason: vote.reason,
-            });
+            return Err(self.put_back(
+                s0_state,
+                SolverError::TimestepCollapse {
+                    step,
+                    dt: vote.dt,
+                    min: floor,
+                    id: vote.particle_id,
+                    reason: vote.reason,
+                },
+            ));
         }
         let t0 = Instant::now();
         let mut half = s0_state.clone();
@@ -561,10 +560,7 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
         self.timings.integration += t0.elapsed().as_secs_f64();
         let (s1, _) = match self.stage(&mut half) {
             Ok(stage) => stage,
-            Err(e) => {
-                self.state = s0_state;
-                return Err(e);
-            }
+            Err(e) => return Err(self.put_back(s0_state, e)),
         };
         let t1 = Instant::now();
         let mut next = s0_state;
@@ -624,6 +620,13 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
             vote,
             boundary_corrections: corrections,
         })
+    }
+
+    /// Puts the step's start state back (an error before the update) and passes the
+    /// error on.
+    fn put_back(&mut self, start: State<D>, e: SolverError) -> SolverError {
+        self.state = start;
+        e
     }
 
     /// y ← y0 + dt·f(stage), positions with the stage state's own velocities.
@@ -820,7 +823,11 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
     /// at, with the particle's velocity gradient embedded in 3-D (1-D uniaxial and 2-D
     /// plane strain: the out-of-plane rates are zero; RZ: L_θθ = v_r/r).
     fn update_stress(&self, y: &mut State<D>, stage: &Stage<D>, dt: f64, rate_state: &State<D>) {
-        let rz = self.scheme.geometry == Geometry::Axisymmetric;
+        // RZ: the table of R̂ for the hoop strain rate.
+        let rz_table = match self.scheme.geometry {
+            Geometry::Axisymmetric => self.smoothed_radius.as_ref(),
+            _ => None,
+        };
         let grads = stage.grads.as_ref();
         let updated: Vec<(sph_core::glam::DMat3, f64, f64)> = (0..y.particles.len())
             .into_par_iter()
@@ -833,8 +840,7 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
                 let ds = match grads {
                     Some(gr) if g > 0.0 => {
                         let mut l = D::embed(&gr.each[i].strain_velocity);
-                        if rz {
-                            let table = self.smoothed_radius.as_ref().expect("RZ has the table");
+                        if let Some(table) = rz_table {
                             l.z_axis.z = hoop_strain_rate(&rate_state.particles, i, table);
                         }
                         sph_strength::jaumann_rate(&rate_state.stress[i], &l, g)
