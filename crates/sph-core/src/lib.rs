@@ -45,7 +45,7 @@ pub use dimension::{Dim1, Dim2, Dim3, Dimension};
 pub use eigen::SymEigen;
 pub use error::CoreError;
 pub use neighbors::{
-    CellList, NeighborList, NeighborSearch, PairCriterion, ScalarSupport, TensorSupport,
+    CellList, NeighborList, NeighborSearch, Neighbors, PairCriterion, ScalarSupport, TensorSupport,
     brute_force_neighbors,
 };
 pub use particles::{ParticleInit, Particles};

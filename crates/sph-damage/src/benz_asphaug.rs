@@ -235,7 +235,7 @@ impl DamageModel for BenzAsphaug {
     #[inline]
     fn evaluate(&self, particle: usize, input: &DamageInput) -> DamageEval {
         let d = input.damage;
-        let Some(thresholds) = self.flaws.thresholds(particle) else {
+        let Some(n_tot) = self.flaws.n_flaws(particle) else {
             // Out-of-range particle: NaN, for the solver's state check to report.
             return DamageEval {
                 rate: f64::NAN,
@@ -246,7 +246,6 @@ impl DamageModel for BenzAsphaug {
                 active_flaws: 0,
             };
         };
-        let n_tot = thresholds.len();
         if d >= 1.0 {
             // Fully damaged: nothing left to grow; all flaws count as active.
             return DamageEval {
@@ -263,8 +262,8 @@ impl DamageModel for BenzAsphaug {
                 active_flaws: 0,
             };
         }
-        // Flaw j is active when ε ≥ ε_j (thresholds ascending).
-        let n_act = thresholds.partition_point(|&eps| eps <= strain);
+        // Flaw j is active when ε ≥ ε_j.
+        let n_act = self.flaws.activated(particle, strain).unwrap_or(0);
         let growth =
             self.params.crack_speed_fraction * input.longitudinal_wave_speed / input.particle_size;
         let factor = match self.params.growth {

@@ -244,51 +244,42 @@ fn flaw_set_round_trips_through_serde_and_rejects_corruption() {
     let back: FlawSet = serde_json::from_str(&json).unwrap();
     assert_eq!(back, f);
 
-    let set = |offsets: serde_json::Value, thresholds: serde_json::Value| {
+    let set = |offsets: serde_json::Value, ranks: serde_json::Value| {
         serde_json::json!({
             "params": {"k": 4e35, "m": 9.0},
             "total_volume": 1e-6,
             "seed": 0,
             "offsets": offsets,
-            "thresholds": thresholds,
+            "ranks": ranks,
         })
     };
-    let ok = set(
-        serde_json::json!([0, 2, 3]),
-        serde_json::json!([1e-4, 2e-4, 5e-5]),
-    );
+    let ok = set(serde_json::json!([0, 2, 3]), serde_json::json!([1, 3, 2]));
     let small: FlawSet = serde_json::from_value(ok).unwrap();
-    assert_eq!(small.thresholds(0), Some(&[1e-4, 2e-4][..]));
-    for (offsets, thresholds) in [
+    assert_eq!(small.ranks(0), Some(&[1, 3][..]));
+    assert_eq!(
+        small.thresholds(0),
+        Some(vec![
+            small.body_threshold(1).unwrap(),
+            small.body_threshold(3).unwrap()
+        ])
+    );
+    for (offsets, ranks) in [
         // Unsorted within particle 0.
-        (
-            serde_json::json!([0, 2, 3]),
-            serde_json::json!([2e-4, 1e-4, 5e-5]),
-        ),
+        (serde_json::json!([0, 2, 3]), serde_json::json!([3, 1, 2])),
+        // A repeated rank within particle 0.
+        (serde_json::json!([0, 2, 3]), serde_json::json!([1, 1, 2])),
         // Particle 1 without flaws.
-        (
-            serde_json::json!([0, 3, 3]),
-            serde_json::json!([1e-4, 2e-4, 3e-4]),
-        ),
-        // Last offset ≠ number of thresholds.
-        (
-            serde_json::json!([0, 1, 2]),
-            serde_json::json!([1e-4, 2e-4, 3e-4]),
-        ),
+        (serde_json::json!([0, 3, 3]), serde_json::json!([1, 2, 3])),
+        // Last offset ≠ number of flaws.
+        (serde_json::json!([0, 1, 2]), serde_json::json!([1, 2, 3])),
         // Not starting at zero.
-        (
-            serde_json::json!([1, 2, 3]),
-            serde_json::json!([1e-4, 2e-4, 3e-4]),
-        ),
-        // Negative threshold.
-        (
-            serde_json::json!([0, 1, 2]),
-            serde_json::json!([-1e-4, 2e-4]),
-        ),
+        (serde_json::json!([1, 2, 3]), serde_json::json!([1, 2, 3])),
+        // Rank 0 (ranks count from 1).
+        (serde_json::json!([0, 1, 2]), serde_json::json!([0, 2])),
         // No particles.
         (serde_json::json!([0]), serde_json::json!([])),
     ] {
-        let r = serde_json::from_value::<FlawSet>(set(offsets.clone(), thresholds));
+        let r = serde_json::from_value::<FlawSet>(set(offsets.clone(), ranks));
         assert!(
             matches!(r, Err(ref e) if e.to_string().contains("flaw set is inconsistent")),
             "{offsets}: {r:?}"
@@ -303,7 +294,7 @@ fn flaw_set_round_trips_through_serde_and_rejects_corruption() {
 #[test]
 fn memory_is_reported() {
     let f = FlawSet::seed_benz_asphaug(WeibullParams::BASALT_STUDY, 10_000, 1.0, 1).unwrap();
-    let floor = 8 * (f.total_flaws() + f.n_particles() + 1);
+    let floor = 4 * (f.total_flaws() + f.n_particles() + 1);
     println!(
         "N = 1e4: {} flaws, {} bytes ({:.1} bytes/particle)",
         f.total_flaws(),

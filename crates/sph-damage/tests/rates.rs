@@ -16,15 +16,27 @@ const RS: f64 = 1.0e-3;
 const GROWTH: f64 = 1_837_320.0;
 
 /// A hand-made flaw set: particle 0 has flaws at 1e-4, 2e-4, 3e-4; particle 1 one at 5e-5.
+/// With k = 4e35 m⁻³, m = 9 and V = 1280 m³, kV = 2⁹·10³⁶, so ε_1 = 5e-5 and the ranks
+/// 2⁹, 4⁹, 6⁹ are 2, 4 and 6 ε_1.
 fn small_flaws(seed: u64) -> FlawSet {
-    serde_json::from_value(serde_json::json!({
+    let f: FlawSet = serde_json::from_value(serde_json::json!({
         "params": {"k": 4e35, "m": 9.0},
-        "total_volume": 1e-6,
+        "total_volume": 1280.0,
         "seed": seed,
         "offsets": [0, 3, 4],
-        "thresholds": [1e-4, 2e-4, 3e-4, 5e-5],
+        "ranks": [512, 262_144, 10_077_696, 1],
     }))
-    .unwrap()
+    .unwrap();
+    for (got, want) in f
+        .thresholds(0)
+        .unwrap()
+        .iter()
+        .chain(&f.thresholds(1).unwrap())
+        .zip([1e-4, 2e-4, 3e-4, 5e-5])
+    {
+        assert!((got / want - 1.0).abs() < 1e-14, "{got} vs {want}");
+    }
+    f
 }
 
 fn small_model(growth: GrowthLaw) -> BenzAsphaug {
@@ -316,8 +328,8 @@ fn no_damage_and_the_builtin_enum() {
     let ba: BuiltinDamage = serde_json::from_str(
         r#"{"model": "benz-asphaug",
             "params": {"weibull": {"k": 4e35, "m": 9.0}, "seed": 0, "growth": "activated-fraction"},
-            "flaws": {"params": {"k": 4e35, "m": 9.0}, "total_volume": 1e-6, "seed": 0,
-                      "offsets": [0, 3, 4], "thresholds": [1e-4, 2e-4, 3e-4, 5e-5]}}"#,
+            "flaws": {"params": {"k": 4e35, "m": 9.0}, "total_volume": 1280.0, "seed": 0,
+                      "offsets": [0, 3, 4], "ranks": [512, 262144, 10077696, 1]}}"#,
     )
     .unwrap();
     assert_eq!(ba, models[2]);

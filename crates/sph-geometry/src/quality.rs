@@ -27,7 +27,7 @@ pub fn closest_approach<V: Vector>(
     let list = CellList::new().neighbors(positions, &ScalarSupport::new(spacing)?)?;
     let mut best: Option<CloseApproach> = None;
     for i in 0..positions.len() {
-        for &j in list.neighbors(i) {
+        for j in list.neighbors(i) {
             let j = j as usize;
             if j <= i {
                 continue;

@@ -53,7 +53,7 @@ fn kernel_deviations(p: &BodyParticles<DVec3>, depth: impl Fn(DVec3) -> f64) -> 
                 return None;
             }
             let mut rho = p.masses[i] * wendland_c2(0.0, h[i]);
-            for &j in list.neighbors(i) {
+            for j in list.neighbors(i) {
                 let j = j as usize;
                 rho += p.masses[j] * wendland_c2((p.positions[i] - p.positions[j]).length(), h[i]);
             }

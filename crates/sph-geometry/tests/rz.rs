@@ -40,7 +40,7 @@ fn kernel_density(p: &BodyParticles<DVec2>, depth: impl Fn(DVec2) -> f64) -> (f6
         .filter(|&i| p.positions[i].x >= h[i] && depth(p.positions[i]) >= h[i])
         .map(|i| {
             let mut s = p.masses[i] * wendland_c2_2d(0.0, h[i]);
-            for &j in list.neighbors(i) {
+            for j in list.neighbors(i) {
                 let j = j as usize;
                 s += p.masses[j] * wendland_c2_2d((p.positions[i] - p.positions[j]).length(), h[i]);
             }

@@ -112,7 +112,7 @@ impl<V: Vector> NeighborSearch<V> for CellList {
             .into_par_iter()
             .map(|c| {
                 let range = c * CHUNK..((c + 1) * CHUNK).min(n);
-                let mut chunk = Chunk::with_rows(range.len());
+                let mut chunk = Chunk::with_rows(range.start, range.len());
                 let mut row = Vec::new();
                 for i in range {
                     row.clear();

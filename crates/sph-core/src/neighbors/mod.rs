@@ -16,7 +16,7 @@ mod list;
 
 pub use criterion::{PairCriterion, ScalarSupport, TensorSupport};
 pub use grid::{CellList, DEFAULT_MAX_LEVELS, LevelStats};
-pub use list::NeighborList;
+pub use list::{NeighborList, Neighbors};
 
 use crate::error::CoreError;
 use crate::vector::Vector;

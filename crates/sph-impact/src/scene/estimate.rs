@@ -39,9 +39,9 @@ pub const ASSUMED_EVALUATIONS_PER_CORE_FLUID: f64 = 1.0e5;
 pub const RZ_RATE_FACTOR: f64 = 4.0 * 2.5 / 3.0;
 
 /// Memory per particle assumed (bytes): the peak resident growth per particle of the
-/// `solid3d` bench, 1423 bytes (the step's start and midpoint states, the neighbour list
+/// `solid3d` bench, 984 bytes (the step's start and midpoint states, the neighbour list
 /// at ≈ 65 neighbours, the pair loops' extended arrays and scratch; docs/performance.md).
-pub const ASSUMED_BYTES_PER_PARTICLE: f64 = 1423.0;
+pub const ASSUMED_BYTES_PER_PARTICLE: f64 = 984.0;
 
 /// One body in the check report.
 #[derive(Clone, Debug, Serialize)]

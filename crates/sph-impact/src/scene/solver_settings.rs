@@ -90,6 +90,9 @@ pub struct SolverSettings {
     /// Linear gradient correction in the continuity equation.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub gradient_correction: Option<bool>,
+    /// Linear correction of the kernel gradient in the momentum equation.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub momentum_correction: Option<bool>,
     /// Linear correction of the strain rate.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub strain_rate_correction: Option<bool>,
@@ -137,6 +140,7 @@ impl SolverSettings {
             density,
             momentum,
             gradient_correction,
+            momentum_correction,
             strain_rate_correction,
             grad_h,
             h_max_factor,

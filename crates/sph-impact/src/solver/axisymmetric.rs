@@ -23,7 +23,7 @@
 //! Next to the axis the pair sums see mirror images (the axis is a reflecting wall: P, ρ, r
 //! and S_rr even, v_r and S_rz odd), which makes their estimate of ∂(r P)/∂r miss part of
 //! P. Within two support radii of the axis the hoop force therefore uses ŝ_i, the pair
-//! sums' own estimate of ∂r/∂r (`Rates::hoop_gauge`), so a uniform stress is in
+//! sums' own estimate of ∂r/∂r (`PairRates::hoop_gauge`), so a uniform stress is in
 //! equilibrium exactly there. Beyond three support radii it uses the exact ∂r/∂r = 1
 //! (blended smoothly in between): out there ŝ no longer measures the axis but free
 //! surfaces and density jumps, where it grows like r/h and would turn any σ_rr ≠ σ_θθ
@@ -126,9 +126,13 @@ pub(crate) struct HoopInput<'a, D: Dimension> {
 
 /// Adds the hoop terms to the stage's rates (module docs) and turns the pair sums' dη/dt
 /// into dρ/dt = (dη/dt − ρ v_r)/r.
-pub(crate) fn add_hoop_terms<D: Dimension>(input: &HoopInput<'_, D>, rates: &mut [Rates<D>]) {
+pub(crate) fn add_hoop_terms<D: Dimension>(
+    input: &HoopInput<'_, D>,
+    rates: &mut [Rates<D>],
+    hoop_gauge: &[f64],
+) {
     let p = input.particles;
-    for (i, out) in rates.iter_mut().enumerate() {
+    for ((i, out), &gauge) in rates.iter_mut().enumerate().zip(hoop_gauge) {
         let (r, h) = (radius(p.position[i]), p.smoothing_length[i]);
         // R̂ stands for r in every denominator: equal to r beyond one support radius from
         // the axis, and finite on it.
@@ -142,7 +146,7 @@ pub(crate) fn add_hoop_terms<D: Dimension>(input: &HoopInput<'_, D>, rates: &mut
         let sigma_tt = (1.0 - d) * s_tt - input.pressure[i];
         // −σ_θθ ŝ/η along r.
         let mut a = D::Vector::ZERO;
-        a.set_component(0, -sigma_tt * out.hoop_gauge / (rho * r_hat));
+        a.set_component(0, -sigma_tt * gauge / (rho * r_hat));
         out.dv += a;
         if input.energy == EnergyForm::Study {
             out.de += sigma_tt * v_r / (rho * r_hat);

@@ -103,6 +103,14 @@ pub struct SchemeConfig {
     /// fields (Bonet & Lok 1999; miluphcuda's tensorial correction). The momentum
     /// equation keeps the plain, antisymmetric gradient, so conservation is unchanged.
     pub gradient_correction: bool,
+    /// Linear correction of the kernel gradient in the momentum equation's stress and
+    /// pressure terms: m_j[σ_i (M_i⁻ᵀ∇W) + σ_j (M_j⁻ᵀ∇W)]/(ρ_iρ_j) with the
+    /// `gradient_correction` matrices (Bonet & Lok 1999), for the particle-pressure
+    /// momentum form (the star-pressure form keeps the plain gradient). The pair force
+    /// stays antisymmetric (momentum exact; energy exact with the compatible form); M⁻ᵀ
+    /// restores the part of the kernel a free surface truncates, where the plain form
+    /// makes a bending plate too soft (docs/verification.md, oscillating plate).
+    pub momentum_correction: bool,
     /// Linear correction (M_i⁻¹) of the velocity gradient that drives the deviatoric
     /// stress, independent of `gradient_correction`: exact for linear velocity fields, so a
     /// rigid rotation produces no strain rate even at a free surface (spinning disc:
@@ -177,6 +185,7 @@ impl Default for SchemeConfig {
             density: DensityForm::Mass,
             momentum: MomentumForm::ParticlePressure,
             gradient_correction: false,
+            momentum_correction: false,
             strain_rate_correction: true,
             grad_h: true,
             h_max_factor: 4.0,

@@ -50,7 +50,8 @@ pub(crate) struct DamageRate {
 
 /// What the damage model needs of one particle in one stage.
 pub(crate) struct DamageStageInput<'a> {
-    /// Damaged deviatoric stress (1 − D) S per real particle (3×3).
+    /// Deviatoric stress S per real particle (3×3), undamaged: the damage D below is
+    /// applied here, σ = (1 − D) S − P_D I.
     pub stress: &'a [sph_core::glam::DMat3],
     /// Damaged pressure P_D.
     pub pressure: &'a [f64],
@@ -87,7 +88,7 @@ pub(crate) fn damage_rates<D: Dimension>(
             };
             // σ_1 of the total stress σ = (1 − D) S − P_D I, tension positive; the stored
             // 3×3 includes the out-of-plane components of 1-D and 2-D runs.
-            let sigma = input.stress[i]
+            let sigma = input.stress[i] * (1.0 - d)
                 - sph_core::glam::DMat3::from_diagonal(sph_core::glam::DVec3::splat(
                     input.pressure[i],
                 ));

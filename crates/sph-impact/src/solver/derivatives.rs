@@ -36,7 +36,8 @@ pub(crate) struct Gradients<D: Dimension> {
 }
 
 /// The result of pass 1: the gradients, and the linear gradient corrections M_i⁻ᵀ
-/// (identity where M is singular) only when `gradient_correction` is on — otherwise
+/// (identity where M is singular) only when `gradient_correction` or
+/// `momentum_correction` is on — otherwise
 /// empty, which saves a tensor per particle (72 bytes in 3-D) at the stage's memory peak.
 #[derive(Clone, Debug)]
 pub(crate) struct GradientSet<D: Dimension> {
@@ -52,22 +53,43 @@ pub(crate) struct Rates<D: Dimension> {
     pub de: f64,
     /// Largest approach speed max_j max(0, −v_ij·r̂) among the neighbours.
     pub approach: f64,
-    /// The part of dv/dt exerted by ghosts (boundaries): their impulse is accounted so
-    /// that momentum balances to round-off even with walls.
-    pub dv_boundary: D::Vector,
     /// W_i = Σ_j m_j F_ij (v*_ij·∇W): with it de/dt = W_i − v_i·(dv/dt) in the compatible
     /// form, which lets the final RK2 update use the time-centred velocity.
     pub work: f64,
-    /// RZ only: the pair sums' own estimate of ∂r/∂r, ŝ_i = r_i Σ_j V_j ∂_r W_ij plus
-    /// Σ_j V_j r_j ∂_r W_ij with V_j = m_j/(ρ_j R̂_j), which the hoop force uses so that a
-    /// uniform stress is in equilibrium also next to the axis (axisymmetric.rs); 1 in
-    /// Cartesian runs.
-    pub hoop_gauge: f64,
 }
+
+impl<D: Dimension> Rates<D> {
+    const ZERO: Self = Rates {
+        drho: 0.0,
+        dv: D::Vector::ZERO,
+        de: 0.0,
+        approach: 0.0,
+        work: 0.0,
+    };
+}
+
+/// The result of pass 2: the rates of every real particle, and what only some particles
+/// or geometries have, kept apart so that a 3-D run does not hold them per particle.
+#[derive(Clone, Debug)]
+pub(crate) struct PairRates<D: Dimension> {
+    pub each: Vec<Rates<D>>,
+    /// (i, the part of dv_i/dt exerted by ghosts) for the particles that have ghost
+    /// neighbours (boundaries), ascending in i: their impulse is accounted so that
+    /// momentum balances to round-off even with walls.
+    pub boundary: Vec<(u32, D::Vector)>,
+    /// RZ only (empty in Cartesian runs): the pair sums' own estimate of ∂r/∂r,
+    /// ŝ_i = r_i Σ_j V_j ∂_r W_ij plus Σ_j V_j r_j ∂_r W_ij with V_j = m_j/(ρ_j R̂_j), which
+    /// the hoop force uses so that a uniform stress is in equilibrium also next to the
+    /// axis (axisymmetric.rs).
+    pub hoop_gauge: Vec<f64>,
+}
+
+/// Rows per parallel task of pass 2.
+const ROWS_PER_TASK: usize = 256;
 
 /// Summation density ρ_i = m_i W(0) + Σ_j m_j W̄_ij over real particles.
 pub(crate) fn summation_density<D: Dimension, P: PairKernel<D>>(
-    ext: &Extended<D>,
+    ext: &Extended<'_, D>,
     list: &NeighborList,
     pk: &P,
     rz_radius: Option<&crate::solver::axisymmetric::SmoothedRadius>,
@@ -78,7 +100,7 @@ pub(crate) fn summation_density<D: Dimension, P: PairKernel<D>>(
         .map(|i| {
             let xi = ext.position[i];
             let w0 = pk.w(i, i, D::Vector::ZERO);
-            let eta = list.neighbors(i).iter().fold(ext.mass[i] * w0, |acc, &j| {
+            let eta = list.neighbors(i).fold(ext.mass[i] * w0, |acc, j| {
                 let j = j as usize;
                 acc + ext.mass[j] * pk.w(i, j, xi - ext.position[j])
             });
@@ -94,11 +116,12 @@ pub(crate) fn summation_density<D: Dimension, P: PairKernel<D>>(
 
 /// Pass 1.
 pub(crate) fn gradients<D: Dimension, P: PairKernel<D>>(
-    ext: &Extended<D>,
+    ext: &Extended<'_, D>,
     list: &NeighborList,
     pk: &P,
     correct: bool,
     correct_strain: bool,
+    keep_correction: bool,
 ) -> GradientSet<D> {
     let rz = !ext.radius.is_empty();
     // The 2-D density of the pair sums: η = ρ r in RZ (ring masses per radian).
@@ -118,7 +141,7 @@ pub(crate) fn gradients<D: Dimension, P: PairKernel<D>>(
         let hi = pk.h(i);
         // Self term of Σ m ∂W/∂h: ∂W(0,h)/∂h = −d W(0,h)/h.
         let mut dwdh = -d * ext.mass[i] * pk.w(i, i, D::Vector::ZERO) / hi;
-        for &j in list.neighbors(i) {
+        for j in list.neighbors(i) {
             let j = j as usize;
             let dx = ext.position[j] - xi;
             let g = pk.grad(i, j, -dx);
@@ -133,7 +156,7 @@ pub(crate) fn gradients<D: Dimension, P: PairKernel<D>>(
         // singular M (a particle with too few neighbours) keeps the raw estimates.
         // M⁻¹ when either use wants it: the continuity equation and reconstruction
         // (`correct`), and the strain rate that drives the deviatoric stress.
-        let inv = if correct || correct_strain {
+        let inv = if correct || correct_strain || keep_correction {
             well_conditioned_inverse(&m)
         } else {
             None
@@ -142,6 +165,7 @@ pub(crate) fn gradients<D: Dimension, P: PairKernel<D>>(
             (true, Some(mi)) => l.mul_tensor(&mi),
             _ => l,
         };
+        let c = inv.map_or(D::Tensor::IDENTITY, |mi| mi.transpose());
         match (correct, inv) {
             (true, Some(mi)) => (
                 Gradients {
@@ -150,7 +174,7 @@ pub(crate) fn gradients<D: Dimension, P: PairKernel<D>>(
                     omega,
                     strain_velocity,
                 },
-                mi.transpose(),
+                c,
             ),
             _ => (
                 Gradients {
@@ -159,11 +183,11 @@ pub(crate) fn gradients<D: Dimension, P: PairKernel<D>>(
                     omega,
                     strain_velocity,
                 },
-                D::Tensor::IDENTITY,
+                c,
             ),
         }
     });
-    if correct {
+    if correct || keep_correction {
         let (each, correction) = per_particle.unzip();
         GradientSet { each, correction }
     } else {
@@ -188,265 +212,323 @@ fn well_conditioned_inverse<T: Tensor>(m: &T) -> Option<T> {
 
 /// Pass 2.
 pub(crate) fn rates<D: Dimension, P: PairKernel<D>>(
-    ext: &Extended<D>,
+    ext: &Extended<'_, D>,
     list: &NeighborList,
     pk: &P,
     grads: Option<&GradientSet<D>>,
     scheme: &SchemeConfig,
-) -> Vec<Rates<D>> {
+) -> PairRates<D> {
     let visc = scheme.viscosity;
-    let solid = !ext.stress.is_empty();
+    let solid = ext.has_stress();
     let damaged = !ext.damage.is_empty();
     let astress = scheme.artificial_stress;
     let use_astress = !ext.astress.is_empty();
+    // The momentum equation's gradient corrections M⁻ᵀ of the real particles, when on.
+    let momentum_corrections = match grads {
+        Some(gr) if scheme.momentum_correction => Some(&gr.correction),
+        _ => None,
+    };
     // RZ: the pair terms carry the weights r (pressure and stress r σ, density η = ρ r;
     // axisymmetric.rs); Cartesian runs have r = 1 throughout.
     let rz = !ext.radius.is_empty();
     let radius = |k: usize| if rz { ext.radius[k] } else { 1.0 };
     let smooth_r = |k: usize| if rz { ext.smoothed_radius[k] } else { 1.0 };
-    (0..ext.n_real)
-        .into_par_iter()
-        .map(|i| {
-            let (xi, vi) = (ext.position[i], ext.velocity[i]);
-            let ri = radius(i);
-            let (mut gauge_a, mut gauge_g) = (0.0, 0.0);
-            let (rhoi, pi, ci, mi_mat) = (
-                ext.density[i],
-                ext.pressure[i],
-                ext.sound_speed[i],
-                ext.material[i],
+    // Particle i's rates, the ghosts' part of its dv/dt, and its hoop gauge (1 outside RZ).
+    let pair_sums = |i: usize| -> (Rates<D>, D::Vector, f64) {
+        let (xi, vi) = (ext.position[i], ext.velocity[i]);
+        let ri = radius(i);
+        let (mut gauge_a, mut gauge_g) = (0.0, 0.0);
+        let (rhoi, pi, ci, mi_mat) = (
+            ext.density[i],
+            ext.pressure[i],
+            ext.sound_speed[i],
+            ext.material[i],
+        );
+        // Particle i's deviatoric stress in D dimensions (the in-plane block).
+        let si = if solid {
+            D::project(&ext.stress(i))
+        } else {
+            D::Tensor::ZERO
+        };
+        let mut out = Rates::ZERO;
+        let mut dv_boundary = D::Vector::ZERO;
+        let mut hoop_gauge = 1.0;
+        let etai = rhoi * smooth_r(i);
+        // RZ: the hoop component R_θθ of particle i's artificial stress, and the sum that
+        // its hoop force balances (below the loop).
+        let r_tt = if rz && use_astress {
+            let s_tt = if solid { ext.stress(i).z_axis.z } else { 0.0 };
+            astress.hoop(s_tt - pi, pi, rhoi)
+        } else {
+            0.0
+        };
+        let mut astress_hoop_sum = 0.0;
+        for j in list.neighbors(i) {
+            let j = j as usize;
+            let r = xi - ext.position[j];
+            let dist = r.norm();
+            if dist == 0.0 {
+                // Coincident particles exert no force (∇W = 0) and define no axis.
+                continue;
+            }
+            let r_hat = r / dist;
+            let g = pk.grad_at(i, j, r, dist);
+            let (vj, rhoj, pj, cj, mj) = (
+                ext.velocity[j],
+                ext.density[j],
+                ext.pressure[j],
+                ext.sound_speed[j],
+                ext.mass[j],
             );
-            // Particle i's deviatoric stress in D dimensions (the in-plane block).
-            let si = if solid {
-                D::project(&ext.stress[i])
-            } else {
-                D::Tensor::ZERO
-            };
-            let mut out = Rates {
-                drho: 0.0,
-                dv: D::Vector::ZERO,
-                de: 0.0,
-                approach: 0.0,
-                dv_boundary: D::Vector::ZERO,
-                work: 0.0,
-                hoop_gauge: 1.0,
-            };
-            let etai = rhoi * smooth_r(i);
-            // RZ: the hoop component R_θθ of particle i's artificial stress, and the sum that
-            // its hoop force balances (below the loop).
-            let r_tt = if rz && use_astress {
-                let s_tt = if solid { ext.stress[i].z_axis.z } else { 0.0 };
-                astress.hoop(s_tt - pi, pi, rhoi)
-            } else {
-                0.0
-            };
-            let mut astress_hoop_sum = 0.0;
-            for &j in list.neighbors(i) {
-                let j = j as usize;
-                let r = xi - ext.position[j];
-                let dist = r.norm();
-                if dist == 0.0 {
-                    // Coincident particles exert no force (∇W = 0) and define no axis.
-                    continue;
-                }
-                let r_hat = r / dist;
-                let g = pk.grad_at(i, j, r, dist);
-                let (vj, rhoj, pj, cj, mj) = (
-                    ext.velocity[j],
-                    ext.density[j],
-                    ext.pressure[j],
-                    ext.sound_speed[j],
-                    ext.mass[j],
-                );
-                let vij = vi - vj;
-                out.approach = out.approach.max(-vij.dot(r_hat));
+            let vij = vi - vj;
+            out.approach = out.approach.max(-vij.dot(r_hat));
 
-                // Left (j) and right (i) states along r̂, reconstructed to the midpoint.
-                let (mut ui, mut uj) = (vi.dot(r_hat), vj.dot(r_hat));
-                let (mut pfi, mut pfj) = (pi, pj);
-                if let Some(gr) = grads.map(|g| &g.each) {
-                    let gi = &gr[i];
-                    let src = &gr[ext.source[j] as usize];
-                    // A ghost's gradients are its source's, mapped: M L Mᵀ and M ∇P.
-                    let m = &ext.map(j);
-                    let (lj, gpj) = if j < ext.n_real {
-                        (src.velocity, src.pressure)
-                    } else {
-                        (
-                            m.mul_tensor(&src.velocity).mul_tensor(&m.transpose()),
-                            m.mul_vec(src.pressure),
-                        )
-                    };
-                    let half = r * 0.5;
-                    let dui = r_hat.dot(gi.velocity.mul_vec(-half));
-                    let duj = r_hat.dot(lj.mul_vec(half));
-                    (ui, uj) = reconstruct(ui, uj, dui, duj, scheme.limiter);
-                    (pfi, pfj) = reconstruct(
-                        pi,
-                        pj,
-                        gi.pressure.dot(-half),
-                        gpj.dot(half),
-                        scheme.limiter,
-                    );
-                }
-                let right = SideState {
-                    density: rhoi,
-                    velocity: ui,
-                    pressure: pfi,
-                    sound_speed: ci,
+            // Left (j) and right (i) states along r̂, reconstructed to the midpoint.
+            let (mut ui, mut uj) = (vi.dot(r_hat), vj.dot(r_hat));
+            let (mut pfi, mut pfj) = (pi, pj);
+            if let Some(gr) = grads.map(|g| &g.each) {
+                let gi = &gr[i];
+                let src = &gr[ext.source[j] as usize];
+                // A ghost's gradients are its source's, mapped: M L Mᵀ and M ∇P.
+                let m = &ext.map(j);
+                let (lj, gpj) = if j < ext.n_real {
+                    (src.velocity, src.pressure)
+                } else {
+                    (
+                        m.mul_tensor(&src.velocity).mul_tensor(&m.transpose()),
+                        m.mul_vec(src.pressure),
+                    )
                 };
-                let left = SideState {
-                    density: rhoj,
-                    velocity: uj,
-                    pressure: pfj,
-                    sound_speed: cj,
-                };
-                let v_star = interface_velocity(
-                    &PairInterface {
-                        v_i: vi,
-                        v_j: vj,
-                        r_hat,
-                        right,
-                        left,
-                        damage_i: if damaged { ext.damage[i] } else { 0.0 },
-                        damage_j: if damaged { ext.damage[j] } else { 0.0 },
-                        same_material: mi_mat == ext.material[j],
-                    },
-                    scheme.riemann,
-                    scheme.coupling,
+                let half = r * 0.5;
+                let dui = r_hat.dot(gi.velocity.mul_vec(-half));
+                let duj = r_hat.dot(lj.mul_vec(half));
+                (ui, uj) = reconstruct(ui, uj, dui, duj, scheme.limiter);
+                (pfi, pfj) = reconstruct(
+                    pi,
+                    pj,
+                    gi.pressure.dot(-half),
+                    gpj.dot(half),
+                    scheme.limiter,
                 );
+            }
+            let right = SideState {
+                density: rhoi,
+                velocity: ui,
+                pressure: pfi,
+                sound_speed: ci,
+            };
+            let left = SideState {
+                density: rhoj,
+                velocity: uj,
+                pressure: pfj,
+                sound_speed: cj,
+            };
+            let v_star = interface_velocity(
+                &PairInterface {
+                    v_i: vi,
+                    v_j: vj,
+                    r_hat,
+                    right,
+                    left,
+                    damage_i: if damaged { ext.damage[i] } else { 0.0 },
+                    damage_j: if damaged { ext.damage[j] } else { 0.0 },
+                    same_material: mi_mat == ext.material[j],
+                },
+                scheme.riemann,
+                scheme.coupling,
+            );
 
-                let rj = radius(j);
-                let etaj = rhoj * smooth_r(j);
-                let r_bar = 0.5 * (ri + rj);
-                let h_bar = scheme.viscosity_length_factor * 0.5 * (pk.h(i) + pk.h(j));
-                // In RZ the viscous pressure is weighted like the pressure: × r̄/(r_i r_j).
-                let pi_ij = visc.pi(vij, r, 0.5 * (rhoi + rhoj), 0.5 * (ci + cj), h_bar)
-                    * (r_bar / (ri * rj));
-                // Artificial stress: m_j f_ij^n (R_i + R_j)·∇_i W (paper §2.3; R from the
-                // total stress, repulsive in tension).
-                let (a_force, f_astress) = if use_astress {
-                    let r_sum = ext.astress[i] * (1.0 / ri) + ext.astress[j] * (1.0 / rj);
-                    if r_sum.double_dot(&r_sum) > 0.0 || r_tt != 0.0 {
-                        let dp = 0.5 * (ext.spacing0[i] + ext.spacing0[j]);
-                        let f = (pk.w(i, j, r) / pk.w_at(i, j, r_hat, dp)).powi(astress.exponent);
-                        (r_sum.mul_vec(g) * (mj * f), f)
-                    } else {
-                        (D::Vector::ZERO, 0.0)
-                    }
+            let rj = radius(j);
+            let etaj = rhoj * smooth_r(j);
+            let r_bar = 0.5 * (ri + rj);
+            let h_bar = scheme.viscosity_length_factor * 0.5 * (pk.h(i) + pk.h(j));
+            // In RZ the viscous pressure is weighted like the pressure: × r̄/(r_i r_j).
+            let pi_ij =
+                visc.pi(vij, r, 0.5 * (rhoi + rhoj), 0.5 * (ci + cj), h_bar) * (r_bar / (ri * rj));
+            // Artificial stress: m_j f_ij^n (R_i + R_j)·∇_i W (paper §2.3; R from the
+            // total stress, repulsive in tension).
+            let (a_force, f_astress) = if use_astress {
+                let r_sum = ext.astress[i] * (1.0 / ri) + ext.astress[j] * (1.0 / rj);
+                if r_sum.double_dot(&r_sum) > 0.0 || r_tt != 0.0 {
+                    let dp = 0.5 * (ext.spacing0[i] + ext.spacing0[j]);
+                    let f = (pk.w(i, j, r) / pk.w_at(i, j, r_hat, dp)).powi(astress.exponent);
+                    (r_sum.mul_vec(g) * (mj * f), f)
                 } else {
                     (D::Vector::ZERO, 0.0)
-                };
-                // The pressure part of the pair force: the particles' pressures (the
-                // study's σ_i + σ_j), or twice the pair's Riemann star pressure.
-                let p_pair = match scheme.momentum {
-                    MomentumForm::ParticlePressure => ri * pi + rj * pj,
-                    MomentumForm::StarPressure => {
-                        2.0 * r_bar * scheme.riemann.star(&left, &right).pressure
+                }
+            } else {
+                (D::Vector::ZERO, 0.0)
+            };
+            // The pressure part of the pair force: the particles' pressures (the
+            // study's σ_i + σ_j), or twice the pair's Riemann star pressure.
+            let p_pair = match scheme.momentum {
+                MomentumForm::ParticlePressure => ri * pi + rj * pj,
+                MomentumForm::StarPressure => {
+                    2.0 * r_bar * scheme.riemann.star(&left, &right).pressure
+                }
+            };
+            let coef = -p_pair / (etai * etaj) - pi_ij;
+            // Pair force per unit mass of i: m_j[(σ_i + σ_j)/(ρ_iρ_j) − Π]∇W + the
+            // artificial stress, with σ = (1 − D) S − P_D I; symmetric in (i, j) up to
+            // the antisymmetric ∇W.
+            let force = match momentum_corrections {
+                // σ_i (C_i∇W) + σ_j (C_j∇W), C = M⁻ᵀ (a ghost's is its source's, mapped
+                // like a tensor): antisymmetric in (i, j) like the plain form.
+                Some(c) if scheme.momentum == MomentumForm::ParticlePressure => {
+                    let cj = if j < ext.n_real {
+                        c[j]
+                    } else {
+                        let m = ext.map(j);
+                        m.mul_tensor(&c[ext.source[j] as usize])
+                            .mul_tensor(&m.transpose())
+                    };
+                    let (gi, gj) = (c[i].mul_vec(g), cj.mul_vec(g));
+                    let mut f = (gi * (-ri * pi) + gj * (-rj * pj)) * (mj / (etai * etaj))
+                        - g * (mj * pi_ij)
+                        + a_force;
+                    if solid {
+                        let sj = D::project(&ext.stress(j));
+                        f += (si.mul_vec(gi) * ri + sj.mul_vec(gj) * rj) * (mj / (etai * etaj));
                     }
-                };
-                let coef = -p_pair / (etai * etaj) - pi_ij;
-                // Pair force per unit mass of i: m_j[(σ_i + σ_j)/(ρ_iρ_j) − Π]∇W + the
-                // artificial stress, with σ = (1 − D) S − P_D I; symmetric in (i, j) up to
-                // the antisymmetric ∇W.
-                let mut force = g * (mj * coef) + a_force;
-                if solid {
-                    let sj = D::project(&ext.stress[j]);
-                    force += (si * ri + sj * rj).mul_vec(g) * (mj / (etai * etaj));
+                    f
                 }
-                // An unbonded interface carries no tension: a pair of different materials
-                // whose force would pull i toward j does not interact at all (no force, and
-                // no density or energy change, so the opening gap does not stretch either
-                // body). The test is the same for (i, j) and (j, i).
-                if scheme.unbonded_interfaces && mi_mat != ext.material[j] && force.dot(r_hat) < 0.0
-                {
-                    continue;
-                }
-                out.dv += force;
-                if j >= ext.n_real {
-                    out.dv_boundary += force;
-                }
-                if rz {
-                    let vx = mj / etaj * g.component(0);
-                    gauge_a += vx;
-                    gauge_g += vx * rj;
-                    // 1/r_i + 1/r_j = 2/r_j + (r_j − r_i)/(r_i r_j): the first part is the
-                    // Cartesian pair term of R/r (zero for a uniform R on a complete
-                    // lattice), the second the geometric part the hoop force cancels.
-                    astress_hoop_sum += mj * f_astress * (rj - ri) / (ri * rj) * g.component(0);
-                }
-                // The continuity equation uses the corrected gradient when enabled.
-                let gc = match grads {
-                    Some(gr) if !gr.correction.is_empty() => gr.correction[i].mul_vec(g),
-                    _ => g,
-                };
-                let dvs = (vi - v_star).dot(gc);
-                out.drho += match scheme.density {
-                    DensityForm::Volume => 2.0 * etai * mj / etaj * dvs,
-                    DensityForm::Mass => 2.0 * mj * dvs,
-                    // Summation density is recomputed from positions each stage.
-                    DensityForm::Summation => 0.0,
-                };
-                // Energy: the compatible form pairs with the plain (antisymmetric) gradient
-                // of the momentum equation, which is what makes it exactly conservative.
-                let dvs_plain = (vi - v_star).dot(g);
-                out.de += match scheme.energy {
-                    EnergyForm::Compatible => {
-                        out.work += force.dot(v_star);
-                        -force.dot(vi - v_star)
+                _ => {
+                    let mut f = g * (mj * coef) + a_force;
+                    if solid {
+                        let sj = D::project(&ext.stress(j));
+                        f += (si * ri + sj * rj).mul_vec(g) * (mj / (etai * etaj));
                     }
-                    EnergyForm::Study => {
-                        // −2 m_j/(ρ_iρ_j) (v_i − v*)·(σ_i ∇W) with σ_i = S_i − P_i I, plus
-                        // the viscous and artificial-stress heating.
-                        let shear = if solid {
-                            -2.0 * mj * ri / (etai * etaj) * (vi - v_star).dot(si.mul_vec(g))
-                        } else {
-                            0.0
-                        };
-                        shear
-                            + mj * (2.0 * ri * pi / (etai * etaj) * dvs_plain
-                                + 0.5 * pi_ij * vij.dot(g))
-                            - 0.5 * vij.dot(a_force)
-                    }
-                };
+                    f
+                }
+            };
+            // An unbonded interface carries no tension: a pair of different materials
+            // whose force would pull i toward j does not interact at all (no force, and
+            // no density or energy change, so the opening gap does not stretch either
+            // body). The test is the same for (i, j) and (j, i).
+            if scheme.unbonded_interfaces && mi_mat != ext.material[j] && force.dot(r_hat) < 0.0 {
+                continue;
             }
-            // The grad-h factor makes the continuity equation the time derivative of the
-            // summation density with h ∝ ρ^(−1/d) (Springel & Hernquist 2002; Price
-            // 2012, eq. 39); without it the density drifts wherever h changes fast, as
-            // across a strong shock. Ω is clamped to [0.5, 2] (far from its usual ≈ 1 only
-            // for particles that have lost most neighbours).
-            if scheme.grad_h
-                && let Some(gr) = grads
-            {
-                out.drho /= gr.each[i].omega.clamp(0.5, 2.0);
+            out.dv += force;
+            if j >= ext.n_real {
+                dv_boundary += force;
             }
             if rz {
-                // ŝ = r_i Σ V_j ∂_r W + Σ V_j r_j ∂_r W balances the pair sums' estimate of
-                // ∂(r σ_rr)/∂r for a uniform stress, which the axis' mirror images and R̂
-                // bias within two support radii of the axis. Farther out that bias is gone
-                // and ŝ instead measures free surfaces and density jumps (∝ r_i/h at a
-                // surface), where it would turn σ_rr ≠ σ_θθ into a spurious radial force:
-                // there the gauge is the exact ∂r/∂r = 1, blended smoothly. axisymmetric.rs.
-                let keep = axis_zone(ri / pk.h(i));
-                out.hoop_gauge = keep * (ri * gauge_a + gauge_g) + (1.0 - keep);
-                // The hoop part of the artificial stress: −R_θθ,i Σ_j m_j f_ij^n (r_j − r_i)/
-                // (r_i r_j) ∂_r W_ij along r, so that a uniform R exerts no force, as in
-                // Cartesian runs (without it a uniform tension pulled rings toward the axis
-                // at (0.25–0.75) ε|P|/(ρ r)). Its work goes to the internal energy: in the
-                // compatible form through de = W − v·(dv/dt), in the study's form here.
-                let a_r = -r_tt * astress_hoop_sum;
-                if a_r != 0.0 {
-                    let mut a = D::Vector::ZERO;
-                    a.set_component(0, a_r);
-                    out.dv += a;
-                    if scheme.energy == EnergyForm::Study {
-                        out.de -= vi.component(0) * a_r;
-                    }
+                let vx = mj / etaj * g.component(0);
+                gauge_a += vx;
+                gauge_g += vx * rj;
+                // 1/r_i + 1/r_j = 2/r_j + (r_j − r_i)/(r_i r_j): the first part is the
+                // Cartesian pair term of R/r (zero for a uniform R on a complete
+                // lattice), the second the geometric part the hoop force cancels.
+                astress_hoop_sum += mj * f_astress * (rj - ri) / (ri * rj) * g.component(0);
+            }
+            // The continuity equation uses the corrected gradient when enabled.
+            let gc = match grads {
+                Some(gr) if scheme.gradient_correction => gr.correction[i].mul_vec(g),
+                _ => g,
+            };
+            let dvs = (vi - v_star).dot(gc);
+            out.drho += match scheme.density {
+                DensityForm::Volume => 2.0 * etai * mj / etaj * dvs,
+                DensityForm::Mass => 2.0 * mj * dvs,
+                // Summation density is recomputed from positions each stage.
+                DensityForm::Summation => 0.0,
+            };
+            // Energy: the compatible form pairs with the plain (antisymmetric) gradient
+            // of the momentum equation, which is what makes it exactly conservative.
+            let dvs_plain = (vi - v_star).dot(g);
+            out.de += match scheme.energy {
+                EnergyForm::Compatible => {
+                    out.work += force.dot(v_star);
+                    -force.dot(vi - v_star)
+                }
+                EnergyForm::Study => {
+                    // −2 m_j/(ρ_iρ_j) (v_i − v*)·(σ_i ∇W) with σ_i = S_i − P_i I, plus
+                    // the viscous and artificial-stress heating.
+                    let shear = if solid {
+                        -2.0 * mj * ri / (etai * etaj) * (vi - v_star).dot(si.mul_vec(g))
+                    } else {
+                        0.0
+                    };
+                    shear
+                        + mj * (2.0 * ri * pi / (etai * etaj) * dvs_plain
+                            + 0.5 * pi_ij * vij.dot(g))
+                        - 0.5 * vij.dot(a_force)
+                }
+            };
+        }
+        // The grad-h factor makes the continuity equation the time derivative of the
+        // summation density with h ∝ ρ^(−1/d) (Springel & Hernquist 2002; Price
+        // 2012, eq. 39); without it the density drifts wherever h changes fast, as
+        // across a strong shock. Ω is clamped to [0.5, 2] (far from its usual ≈ 1 only
+        // for particles that have lost most neighbours).
+        if scheme.grad_h
+            && let Some(gr) = grads
+        {
+            out.drho /= gr.each[i].omega.clamp(0.5, 2.0);
+        }
+        if rz {
+            // ŝ = r_i Σ V_j ∂_r W + Σ V_j r_j ∂_r W balances the pair sums' estimate of
+            // ∂(r σ_rr)/∂r for a uniform stress, which the axis' mirror images and R̂
+            // bias within two support radii of the axis. Farther out that bias is gone
+            // and ŝ instead measures free surfaces and density jumps (∝ r_i/h at a
+            // surface), where it would turn σ_rr ≠ σ_θθ into a spurious radial force:
+            // there the gauge is the exact ∂r/∂r = 1, blended smoothly. axisymmetric.rs.
+            let keep = axis_zone(ri / pk.h(i));
+            hoop_gauge = keep * (ri * gauge_a + gauge_g) + (1.0 - keep);
+            // The hoop part of the artificial stress: −R_θθ,i Σ_j m_j f_ij^n (r_j − r_i)/
+            // (r_i r_j) ∂_r W_ij along r, so that a uniform R exerts no force, as in
+            // Cartesian runs (without it a uniform tension pulled rings toward the axis
+            // at (0.25–0.75) ε|P|/(ρ r)). Its work goes to the internal energy: in the
+            // compatible form through de = W − v·(dv/dt), in the study's form here.
+            let a_r = -r_tt * astress_hoop_sum;
+            if a_r != 0.0 {
+                let mut a = D::Vector::ZERO;
+                a.set_component(0, a_r);
+                out.dv += a;
+                if scheme.energy == EnergyForm::Study {
+                    out.de -= vi.component(0) * a_r;
                 }
             }
-            out
-        })
-        .collect()
+        }
+        (out, dv_boundary, hoop_gauge)
+    };
+    // Each task fills a block of rows in place and lists its boundary particles; the
+    // lists come back in block order, so the result is the same for any thread count.
+    let n = ext.n_real;
+    let mut each = vec![Rates::ZERO; n];
+    let mut hoop_gauge = if rz { vec![1.0; n] } else { Vec::new() };
+    let fill = |block: usize, rows: &mut [Rates<D>], mut gauge: Option<&mut [f64]>| {
+        let mut boundary = Vec::new();
+        for (k, slot) in rows.iter_mut().enumerate() {
+            let i = block * ROWS_PER_TASK + k;
+            let (r, b, g) = pair_sums(i);
+            *slot = r;
+            if let Some(gauge) = gauge.as_deref_mut() {
+                gauge[k] = g;
+            }
+            if b != D::Vector::ZERO {
+                boundary.push((i as u32, b));
+            }
+        }
+        boundary
+    };
+    let boundary = if rz {
+        each.par_chunks_mut(ROWS_PER_TASK)
+            .zip(hoop_gauge.par_chunks_mut(ROWS_PER_TASK))
+            .enumerate()
+            .flat_map_iter(|(c, (rows, gauge))| fill(c, rows, Some(gauge)))
+            .collect()
+    } else {
+        each.par_chunks_mut(ROWS_PER_TASK)
+            .enumerate()
+            .flat_map_iter(|(c, rows)| fill(c, rows, None))
+            .collect()
+    };
+    PairRates {
+        each,
+        boundary,
+        hoop_gauge,
+    }
 }
 
 /// Weight of the axis part of the hoop gauge at q = r/h: 1 within two support radii of

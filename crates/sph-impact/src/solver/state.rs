@@ -52,9 +52,67 @@ impl<D: Dimension> Default for State<D> {
     }
 }
 
+impl<D: Dimension> State<D> {
+    /// Makes `self` a copy of `source`'s evolving fields, reusing `self`'s allocations
+    /// (the derived `clone_from` would allocate anew). The fields that never change
+    /// during a run (mass, material, id, Δp0, damage index) are not copied: the
+    /// integrator lends them with [`Self::swap_constants`].
+    pub(crate) fn copy_evolving_from(&mut self, source: &State<D>) {
+        // Destructured so that a field added to either struct fails to compile here
+        // until it is either copied or listed as constant.
+        let State {
+            particles,
+            h_tensor,
+            spacing0: _,
+            stress,
+            plastic_strain,
+            plastic_strain_rate,
+            damage_state,
+            damage_index: _,
+            time,
+            step,
+        } = source;
+        let Particles {
+            position,
+            velocity,
+            mass: _,
+            density,
+            specific_energy,
+            smoothing_length,
+            material: _,
+            id: _,
+        } = particles;
+        let p = &mut self.particles;
+        p.position.clone_from(position);
+        p.velocity.clone_from(velocity);
+        p.density.clone_from(density);
+        p.specific_energy.clone_from(specific_energy);
+        p.smoothing_length.clone_from(smoothing_length);
+        self.h_tensor.clone_from(h_tensor);
+        self.stress.clone_from(stress);
+        self.plastic_strain.clone_from(plastic_strain);
+        self.plastic_strain_rate.clone_from(plastic_strain_rate);
+        self.damage_state.clone_from(damage_state);
+        self.time = *time;
+        self.step = *step;
+    }
+
+    /// Exchanges the constant fields (those [`Self::copy_evolving_from`] skips) with
+    /// `other`: the RK2 midpoint state borrows them from the step's start state for its
+    /// stage and gives them back, so they are held once (30 bytes per particle).
+    pub(crate) fn swap_constants(&mut self, other: &mut State<D>) {
+        let (p, q) = (&mut self.particles, &mut other.particles);
+        std::mem::swap(&mut p.mass, &mut q.mass);
+        std::mem::swap(&mut p.material, &mut q.material);
+        std::mem::swap(&mut p.id, &mut q.id);
+        std::mem::swap(&mut self.spacing0, &mut other.spacing0);
+        std::mem::swap(&mut self.damage_index, &mut other.damage_index);
+    }
+}
+
 /// Real particles followed by ghosts, with everything a pair term reads.
 #[derive(Clone, Debug, Default)]
-pub(crate) struct Extended<D: Dimension> {
+pub(crate) struct Extended<'a, D: Dimension> {
     pub n_real: usize,
     pub position: Vec<D::Vector>,
     pub velocity: Vec<D::Vector>,
@@ -72,8 +130,12 @@ pub(crate) struct Extended<D: Dimension> {
     /// ghost's (reflection or identity); real particles map by the identity, which is not
     /// stored (72 bytes per particle in 3-D).
     pub ghost_map: Vec<D::Tensor>,
-    /// Damaged deviatoric stress (1 − D) S (empty without strength); ghosts carry M S Mᵀ.
-    pub stress: Vec<sph_core::glam::DMat3>,
+    /// The real particles' deviatoric stress S, borrowed from the state (empty without
+    /// strength): [`Self::stress`] applies the damage when it is read, so the pair passes
+    /// hold no copy of it (72 bytes per particle in 3-D).
+    real_stress: &'a [sph_core::glam::DMat3],
+    /// Ghosts only (index k − n_real): their damaged stress M (1 − D) S Mᵀ.
+    ghost_stress: Vec<sph_core::glam::DMat3>,
     /// Damage D (empty without damage).
     pub damage: Vec<f64>,
     /// Artificial-stress tensor R (empty when the artificial stress is off).
@@ -86,7 +148,27 @@ pub(crate) struct Extended<D: Dimension> {
     pub smoothed_radius: Vec<f64>,
 }
 
-impl<D: Dimension> Extended<D> {
+impl<'a, D: Dimension> Extended<'a, D> {
+    /// True when the particles carry a deviatoric stress (some material has strength).
+    #[inline]
+    pub fn has_stress(&self) -> bool {
+        !self.real_stress.is_empty()
+    }
+
+    /// The damaged deviatoric stress (1 − D) S of particle k (real or ghost); only when
+    /// [`Self::has_stress`].
+    #[inline]
+    pub fn stress(&self, k: usize) -> sph_core::glam::DMat3 {
+        if k < self.n_real {
+            match self.damage.get(k) {
+                Some(d) => self.real_stress[k] * (1.0 - d),
+                None => self.real_stress[k],
+            }
+        } else {
+            self.ghost_stress[k - self.n_real]
+        }
+    }
+
     /// The map of particle k's vectors from its source's (identity for real particles).
     #[inline]
     pub fn map(&self, k: usize) -> D::Tensor {
@@ -101,12 +183,14 @@ impl<D: Dimension> Extended<D> {
     /// boundary seeing the real particles and the ghosts made before it (so corners
     /// of two periodic axes are filled).
     /// `pressure` is the damaged pressure P_D and `damage` the damage D of each real
-    /// particle (empty without damage); the stress is stored as (1 − D) S.
+    /// particle (empty without damage); the stress is stored as (1 − D) S. The three
+    /// per-particle arrays are taken over (the ghosts are appended to them), not copied.
     pub fn build(
         state: &State<D>,
-        pressure: &[f64],
-        sound_speed: &[f64],
-        damage: &[f64],
+        stress: &'a [sph_core::glam::DMat3],
+        pressure: Vec<f64>,
+        sound_speed: Vec<f64>,
+        damage: Vec<f64>,
         support: &[f64],
         boundaries: &[Boundary<D>],
     ) -> Self {
@@ -118,25 +202,17 @@ impl<D: Dimension> Extended<D> {
             velocity: p.velocity.clone(),
             mass: p.mass.clone(),
             density: p.density.clone(),
-            pressure: pressure.to_vec(),
-            sound_speed: sound_speed.to_vec(),
+            pressure,
+            sound_speed,
             h: p.smoothing_length.clone(),
             h_tensor: state.h_tensor.clone(),
             spacing0: state.spacing0.clone(),
             material: p.material.clone(),
             source: (0..n as u32).collect(),
             ghost_map: Vec::new(),
-            stress: if damage.is_empty() {
-                state.stress.clone()
-            } else {
-                state
-                    .stress
-                    .iter()
-                    .zip(damage)
-                    .map(|(s, d)| *s * (1.0 - d))
-                    .collect()
-            },
-            damage: damage.to_vec(),
+            real_stress: stress,
+            ghost_stress: Vec::new(),
+            damage,
             astress: Vec::new(),
             radius: Vec::new(),
             smoothed_radius: Vec::new(),
@@ -168,7 +244,7 @@ impl<D: Dimension> Extended<D> {
                 ext.source.push(ext.source[s]);
                 let composed = g.map.mul_tensor(&ext.map(s));
                 ext.ghost_map.push(composed);
-                if !ext.stress.is_empty() {
+                if ext.has_stress() {
                     // A stress maps as a tensor: S' = M S Mᵀ with M the reflection in 3-D.
                     let m = D::embed(&g.map)
                         + sph_core::glam::DMat3::from_diagonal(sph_core::glam::DVec3::new(
@@ -176,8 +252,8 @@ impl<D: Dimension> Extended<D> {
                             if D::DIM > 1 { 0.0 } else { 1.0 },
                             if D::DIM > 2 { 0.0 } else { 1.0 },
                         ));
-                    let sm = m * ext.stress[s] * m.transpose();
-                    ext.stress.push(sm);
+                    let sm = m * ext.stress(s) * m.transpose();
+                    ext.ghost_stress.push(sm);
                 }
                 if !ext.damage.is_empty() {
                     ext.damage.push(ext.damage[s]);

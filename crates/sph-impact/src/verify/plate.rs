@@ -198,14 +198,19 @@ fn run_case(
 }
 
 /// Runs the three cases with `n` particles across the thickness. The scheme's artificial
-/// stress is replaced per case (tensor form, ε = 0.3, n = 4, or off).
+/// stress is replaced per case: on (the tensor form, ε = 0.3, n = 4, unless the scheme
+/// sets a positive ε, then the scheme's) or off.
 pub(crate) fn run(n: usize, scheme: SchemeConfig) -> Result<Outcome, SolverError> {
     let wall = std::time::Instant::now();
     let period = exact_period();
-    let with = ArtificialStress {
-        epsilon: 0.3,
-        exponent: 4,
-        form: ArtificialStressForm::Principal,
+    let with = if scheme.artificial_stress.is_off() {
+        ArtificialStress {
+            epsilon: 0.3,
+            exponent: 4,
+            form: ArtificialStressForm::Principal,
+        }
+    } else {
+        scheme.artificial_stress
     };
     let without = ArtificialStress {
         epsilon: 0.0,
@@ -251,6 +256,7 @@ pub(crate) fn run(n: usize, scheme: SchemeConfig) -> Result<Outcome, SolverError
     let c0 = (bulk / RHO).sqrt();
     let omega = 2.0 * std::f64::consts::PI / period;
     let amp = small.tip.iter().fold(0.0f64, |a, y| a.max(y.abs()));
+    out.set("artificial_stress_epsilon", with.epsilon);
     out.set("period_exact", period);
     out.set("period", measured);
     out.set("period_error_relative", measured / period - 1.0);
