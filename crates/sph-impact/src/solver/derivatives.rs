@@ -367,10 +367,14 @@ pub(crate) fn rates<D: Dimension, P: PairKernel<D>>(
                     2.0 * r_bar * scheme.riemann.star(&left, &right).pressure
                 }
             };
-            let coef = -p_pair / (etai * etaj) - pi_ij;
             // Pair force per unit mass of i: m_j[(σ_i + σ_j)/(ρ_iρ_j) − Π]∇W + the
             // artificial stress, with σ = (1 − D) S − P_D I; symmetric in (i, j) up to
             // the antisymmetric ∇W.
+            let sj = if solid {
+                D::project(&ext.stress(j))
+            } else {
+                D::Tensor::ZERO
+            };
             let force = match momentum_corrections {
                 // σ_i (C_i∇W) + σ_j (C_j∇W), C = M⁻ᵀ (a ghost's is its source's, mapped
                 // like a tensor): antisymmetric in (i, j) like the plain form.
@@ -387,15 +391,14 @@ pub(crate) fn rates<D: Dimension, P: PairKernel<D>>(
                         - g * (mj * pi_ij)
                         + a_force;
                     if solid {
-                        let sj = D::project(&ext.stress(j));
                         f += (si.mul_vec(gi) * ri + sj.mul_vec(gj) * rj) * (mj / (etai * etaj));
                     }
                     f
                 }
                 _ => {
+                    let coef = -p_pair / (etai * etaj) - pi_ij;
                     let mut f = g * (mj * coef) + a_force;
                     if solid {
-                        let sj = D::project(&ext.stress(j));
                         f += (si * ri + sj * rj).mul_vec(g) * (mj / (etai * etaj));
                     }
                     f

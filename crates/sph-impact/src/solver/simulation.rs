@@ -667,8 +667,7 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
 
     /// y ← y0 + dt·f(stage), positions with the stage state's own velocities.
     fn advance(&self, y: &mut State<D>, y0: &State<D>, stage: &Stage<D>, dt: f64) {
-        let v = y0.particles.velocity.clone();
-        self.advance_with_velocity(y, &v, stage, dt, y0);
+        self.advance_with_velocity(y, &y0.particles.velocity, stage, dt, y0);
         self.floor_density(y);
     }
 
