@@ -16,7 +16,7 @@
 
 use super::outcome::{Outcome, Panel, Picture, Profile};
 use super::setup::elastic_solid;
-use super::setup::simulation;
+use super::setup::{closest_pair, pieces, simulation};
 use crate::{Material, SchemeConfig, Simulation, SolverError};
 use sph_core::glam::DVec2;
 use sph_core::{Dim2, ParticleInit, Particles};
@@ -112,25 +112,15 @@ fn mean_y(sim: &Simulation<Dim2, KernelChoice>, ids: &[usize]) -> f64 {
 }
 
 /// Smallest pair distance among the particles (brute force; a few thousand particles).
-fn min_pair_distance(p: &Particles<Dim2>) -> f64 {
-    let x = &p.position;
-    let mut best = f64::INFINITY;
-    for i in 0..x.len() {
-        for j in i + 1..x.len() {
-            best = best.min(x[i].distance_squared(x[j]));
-        }
-    }
-    best.sqrt()
-}
-
 /// One run to `t_end`: tip history, the zero crossings of the tip deflection, the
-/// smallest pair distance (in spacings) seen at the sampled times, and snapshots at
-/// the `snapshot_times`.
+/// smallest pair distance (in spacings) and the most pieces (friends-of-friends, link
+/// 1.5 Δp) seen at the sampled times, and snapshots at the `snapshot_times`.
 struct PlateRun {
     times: Vec<f64>,
     tip: Vec<f64>,
     crossings: Vec<f64>,
     min_distance: f64,
+    max_pieces: usize,
     snapshots: Vec<(f64, Vec<f64>, Vec<f64>)>,
     steps: u64,
     energy_change: f64,
@@ -151,7 +141,8 @@ fn run_case(
         times: vec![0.0],
         tip: vec![0.0],
         crossings: Vec::new(),
-        min_distance: min_pair_distance(&sim.state.particles) / dx,
+        min_distance: closest_pair(&sim.state.particles) / dx,
+        max_pieces: pieces(&sim.state.particles, 1.5 * dx),
         snapshots: Vec::new(),
         steps: 0,
         energy_change: 0.0,
@@ -172,7 +163,8 @@ fn run_case(
             next_sample += sample;
             out.min_distance = out
                 .min_distance
-                .min(min_pair_distance(&sim.state.particles) / dx);
+                .min(closest_pair(&sim.state.particles) / dx);
+            out.max_pieces = out.max_pieces.max(pieces(&sim.state.particles, 1.5 * dx));
         }
         if y_prev != 0.0 && y_prev.signum() != y.signum() && y != 0.0 {
             let t_prev = *out.times.last().unwrap_or(&0.0);
@@ -268,6 +260,11 @@ pub(crate) fn run(n: usize, scheme: SchemeConfig) -> Result<Outcome, SolverError
     out.set(
         "min_pair_distance_vf005_without_stress",
         big_without.min_distance,
+    );
+    out.set("max_pieces_vf005_with_stress", big_with.max_pieces as f64);
+    out.set(
+        "max_pieces_vf005_without_stress",
+        big_without.max_pieces as f64,
     );
     out.set(
         "tip_amplitude_vf005_with_stress",

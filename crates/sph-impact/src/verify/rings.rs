@@ -13,7 +13,7 @@
 
 use super::outcome::{Outcome, Panel, Picture, Profile};
 use super::setup::elastic_solid;
-use super::setup::simulation;
+use super::setup::{closest_pair, pieces, simulation};
 use crate::{Material, SchemeConfig, Simulation, SolverError};
 use sph_core::glam::DVec2;
 use sph_core::{Dim2, ParticleInit, Particles};
@@ -102,17 +102,10 @@ fn run_case(n: usize, scheme: SchemeConfig) -> Result<RingRun, SolverError> {
         let t = T_END * k as f64 / samples as f64;
         out.steps += sim.run_until(t, |_, _| {})?;
         let p = &sim.state.particles;
-        let pts: Vec<[f64; 3]> = p.position.iter().map(|x| [x.x, x.y, 0.0]).collect();
-        let clusters = sph_diagnostics::friends_of_friends(&pts, 1.5 * dx);
-        out.max_fragments = out.max_fragments.max(clusters.count());
-        out.fragments.push(clusters.count() as f64);
-        let mut dmin = f64::INFINITY;
-        for i in 0..pts.len() {
-            for j in i + 1..pts.len() {
-                dmin = dmin.min(p.position[i].distance_squared(p.position[j]));
-            }
-        }
-        out.min_distance = out.min_distance.min(dmin.sqrt() / dx);
+        let count = pieces(p, 1.5 * dx);
+        out.max_fragments = out.max_fragments.max(count);
+        out.fragments.push(count as f64);
+        out.min_distance = out.min_distance.min(closest_pair(p) / dx);
         let c = sim.conserved();
         out.t.push(t);
         out.kinetic.push(c.kinetic);

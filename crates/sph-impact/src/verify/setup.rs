@@ -5,6 +5,27 @@ use sph_core::{Dimension, ParticleInit, Particles, Vector};
 use sph_eos::IdealGas;
 use sph_kernel::KernelChoice;
 
+/// The smallest distance between two particles (all pairs: the 2-D problems that use it
+/// have a few thousand particles).
+pub(crate) fn closest_pair<D: Dimension>(p: &Particles<D>) -> f64 {
+    let x = &p.position;
+    let mut best = f64::INFINITY;
+    for i in 0..x.len() {
+        for j in i + 1..x.len() {
+            let d = x[i] - x[j];
+            best = best.min(d.dot(d));
+        }
+    }
+    best.sqrt()
+}
+
+/// How many pieces the particles form: friends-of-friends clusters with link length
+/// `link`.
+pub(crate) fn pieces<D: Dimension>(p: &Particles<D>, link: f64) -> usize {
+    let pts: Vec<[f64; 3]> = p.position.iter().map(|x| x.to_array3()).collect();
+    sph_diagnostics::friends_of_friends(&pts, link).count()
+}
+
 /// An ideal gas of adiabatic index `gamma`, as the only material.
 pub(crate) fn gas(gamma: f64) -> Result<Vec<Material>, SolverError> {
     let eos = IdealGas::with_gamma(gamma).map_err(|e| SolverError::Material(e.to_string()))?;
