@@ -323,7 +323,7 @@ fn taylor_bar_final_length_within_five_percent() {
 }
 
 #[test]
-#[ignore = "long: ~16 min in release on one thread"]
+#[ignore = "long: ~6 min in release on two threads, ~16 on one"]
 fn plate_period_within_five_percent_at_ten_across() {
     // verification.md §4: T = 0.2540 s within 5 % at V_f = 0.01 with ≥ 10 across.
     let out = sph_impact::verify::Problem::Plate.run(Some(10)).unwrap();

@@ -111,7 +111,6 @@ fn mean_y(sim: &Simulation<Dim2, KernelChoice>, ids: &[usize]) -> f64 {
         / ids.len() as f64
 }
 
-/// Smallest pair distance among the particles (brute force; a few thousand particles).
 /// One run to `t_end`: tip history, the zero crossings of the tip deflection, the
 /// smallest pair distance (in spacings) and the most pieces (friends-of-friends, link
 /// 1.5 Δp) seen at the sampled times, and snapshots at the `snapshot_times`.
