@@ -302,12 +302,33 @@ fn contact_sphere_into_block_runs_clean() {
 
 #[test]
 #[ignore = "long: ~4 min in release"]
-fn rings_tear_without_artificial_stress() {
+fn rings_rebound_whole_with_artificial_stress_and_tear_without() {
+    // verification.md §5: with artificial stress the rings stay two bodies
+    // (friends-of-friends at 1.5 Δp) and rebound; without it they tear.
     let out = sph_impact::verify::Problem::Rings.run(None).unwrap();
-    let without = out.get("max_fragments_without_stress").unwrap();
-    let clump = out.get("min_pair_distance_without_stress").unwrap();
-    println!("fragments without artificial stress: {without}; closest pair {clump} Δp");
+    let get = |k: &str| out.get(k).unwrap();
+    let (with, with_end) = (
+        get("max_fragments_with_stress"),
+        get("final_fragments_with_stress"),
+    );
+    let rebound = get("rebound_speed_over_initial_with_stress");
+    let without = get("max_fragments_without_stress");
+    let clump = get("min_pair_distance_without_stress");
+    println!(
+        "with artificial stress: at most {with} pieces, {with_end} at the end, rebound \
+         {rebound:+.3} of the impact speed; without: {without} pieces, closest pair \
+         {clump} Δp"
+    );
+    // Never more than the two rings (one while they touch), apart at the end.
+    assert!(with <= 2.0 && with_end == 2.0);
+    // The right ring moves outward again.
+    assert!(rebound > 0.1, "rebound {rebound}");
     assert!(without > 2.0 && clump < 0.5);
+    // Conservation in both runs.
+    for tag in ["with_stress", "without_stress"] {
+        let de = get(&format!("energy_change_relative_{tag}"));
+        assert!(de.abs() < 1e-10, "energy change {de} ({tag})");
+    }
 }
 
 #[test]
