@@ -3,6 +3,18 @@
 use crate::verify::Problem;
 use std::path::Path;
 
+/// The geometry `sph-impact verify` runs a problem in.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum VerifyGeometry {
+    /// The problem's own (1-D, 2-D or 3-D).
+    Own,
+    /// Axisymmetric RZ ([`Problem::run_rz`]).
+    Rz,
+    /// `noh-planar` only: the RZ run's column as a plane 2-D column
+    /// ([`Problem::run_plane_column`]), to separate the RZ terms' error from 2-D SPH's.
+    Plane,
+}
+
 /// `sph-impact verify`: run, print metrics (a table or one JSON object), and write the
 /// outputs into `out` when given.
 pub fn verify(
@@ -11,14 +23,21 @@ pub fn verify(
     scheme: Option<&str>,
     out: Option<&Path>,
     json: bool,
-    rz: bool,
+    geometry: VerifyGeometry,
     deposit: Option<crate::verify::SedovDeposit>,
 ) -> Result<(), String> {
     let scheme = scheme_with_overrides(problem.default_scheme(), scheme)?;
-    let outcome = match deposit {
-        Some(d) => problem.run_sedov(resolution, scheme, d, rz),
-        None if rz => problem.run_rz(resolution, scheme),
-        None => problem.run_with(resolution, scheme),
+    let rz = geometry == VerifyGeometry::Rz;
+    let outcome = match (deposit, geometry) {
+        (Some(_), VerifyGeometry::Plane) => {
+            return Err(
+                "--deposit is for the Sedov problems, --geometry plane for noh-planar".into(),
+            );
+        }
+        (Some(d), _) => problem.run_sedov(resolution, scheme, d, rz),
+        (None, VerifyGeometry::Rz) => problem.run_rz(resolution, scheme),
+        (None, VerifyGeometry::Plane) => problem.run_plane_column(resolution, scheme),
+        (None, VerifyGeometry::Own) => problem.run_with(resolution, scheme),
     }
     .map_err(|e| e.to_string())?;
     if json {

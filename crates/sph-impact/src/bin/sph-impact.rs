@@ -80,9 +80,10 @@ enum Command {
         /// Print the metrics as one JSON object.
         #[arg(long)]
         json: bool,
-        /// Geometry: `3d` (the problem's own) or `rz` (axisymmetric, for sedov-3d,
-        /// noh-spherical and taylor).
-        #[arg(long, default_value = "3d", value_parser = ["3d", "rz"])]
+        /// Geometry: `3d` (the problem's own), `rz` (axisymmetric: noh-planar,
+        /// noh-spherical, sedov-3d, taylor, hel-impact, contact) or `plane` (noh-planar
+        /// only: the RZ run's column in plane 2-D, for comparison).
+        #[arg(long, default_value = "3d", value_parser = ["3d", "rz", "plane"])]
         geometry: String,
         /// Sedov only: how the blast energy goes into the centre, `top-hat` (default:
         /// equal specific energy within one support radius) or `kernel` (kernel-weighted).
@@ -139,7 +140,11 @@ fn main() -> ExitCode {
             scheme.as_deref(),
             out.as_deref(),
             json,
-            geometry == "rz",
+            match geometry.as_str() {
+                "rz" => sph_impact::cli::VerifyGeometry::Rz,
+                "plane" => sph_impact::cli::VerifyGeometry::Plane,
+                _ => sph_impact::cli::VerifyGeometry::Own,
+            },
             deposit,
         )
         .map_err(CommandError::failed),

@@ -256,13 +256,33 @@ impl Problem {
             Problem::Sedov3d => self.run_sedov(Some(n), scheme, SedovDeposit::default(), true),
             Problem::NohSpherical => noh::run_spherical_rz(n, scheme),
             Problem::Taylor => taylor::run_rz(n, scheme),
-            Problem::NohPlanar => noh::run_planar_rz(n, scheme),
+            Problem::NohPlanar => noh::run_planar_column(n, scheme, true),
             Problem::HelImpact => hel_impact::run(n, scheme, RZ_COLUMN),
             Problem::Contact => contact::run(n, scheme, RZ_COLUMN),
             _ => Err(crate::SolverError::BadConfig {
                 field: "geometry",
                 value: 0.0,
                 reason: "this problem has no axisymmetric (RZ) form (noh-planar, hel-impact, contact, sedov-3d, noh-spherical and taylor have)",
+            }),
+        }
+    }
+
+    /// Runs `noh-planar`'s RZ column (`run_rz`) as a plane 2-D column of the same
+    /// particles with reflecting walls on both sides: the flow is the same planar one, so
+    /// the two runs' difference is the RZ terms' own error and this run's difference from
+    /// the 1-D one is 2-D SPH's. Other problems give an error.
+    pub fn run_plane_column(
+        &self,
+        resolution: Option<usize>,
+        scheme: crate::SchemeConfig,
+    ) -> Result<Outcome, crate::SolverError> {
+        let n = self.resolve(resolution, &scheme)?;
+        match self {
+            Problem::NohPlanar => noh::run_planar_column(n, scheme, false),
+            _ => Err(crate::SolverError::BadConfig {
+                field: "geometry",
+                value: 0.0,
+                reason: "only noh-planar has a plane 2-D column form",
             }),
         }
     }

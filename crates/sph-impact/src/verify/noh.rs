@@ -54,13 +54,23 @@ pub(crate) fn run_planar(n: usize, scheme: SchemeConfig) -> Result<Outcome, Solv
     finish("noh-planar", 1, n, dx, sim)
 }
 
-/// Planar Noh along z in axisymmetric RZ: `n` rows on z ∈ [0, 1] and n/4 columns out to
-/// R = n/4 spacings, each particle a ring of mass ρ0 Δx² r per radian moving at −1 in z;
-/// the walls z = 0 and r = R reflect (the flow stays one-dimensional, along z), the top
-/// is free. Profile and norms along z, against the planar exact solution.
-pub(crate) fn run_planar_rz(n: usize, mut scheme: SchemeConfig) -> Result<Outcome, SolverError> {
+/// Planar Noh along z in a 2-D column: `n` rows on z ∈ [0, 1] and n/4 columns out to
+/// R = n/4 spacings, moving at −1 in z; the walls z = 0 and r = R reflect (the flow stays
+/// one-dimensional, along z), the top is free. With `rz` the column is axisymmetric about
+/// r = 0, each particle a ring of mass ρ0 Δx² r per radian; without, it is plane 2-D
+/// (mass ρ0 Δx² per unit depth) with a third wall at r = 0. Profile and norms along z,
+/// against the planar exact solution.
+pub(crate) fn run_planar_column(
+    n: usize,
+    mut scheme: SchemeConfig,
+    rz: bool,
+) -> Result<Outcome, SolverError> {
     use sph_core::glam::DVec2;
-    scheme.geometry = crate::Geometry::Axisymmetric;
+    scheme.geometry = if rz {
+        crate::Geometry::Axisymmetric
+    } else {
+        crate::Geometry::Cartesian
+    };
     let dx = 1.0 / n as f64;
     let columns = (n / 4).max(4);
     let r_wall = columns as f64 * dx;
@@ -71,7 +81,7 @@ pub(crate) fn run_planar_rz(n: usize, mut scheme: SchemeConfig) -> Result<Outcom
             p.push(particle(
                 x,
                 DVec2::new(0.0, -1.0),
-                dx * dx * x.x,
+                if rz { dx * dx * x.x } else { dx * dx },
                 1.0,
                 P0,
                 GAMMA,
@@ -79,7 +89,7 @@ pub(crate) fn run_planar_rz(n: usize, mut scheme: SchemeConfig) -> Result<Outcom
             ));
         }
     }
-    let walls = vec![
+    let mut walls = vec![
         Boundary::Wall {
             point: DVec2::ZERO,
             normal: DVec2::Y,
@@ -89,8 +99,19 @@ pub(crate) fn run_planar_rz(n: usize, mut scheme: SchemeConfig) -> Result<Outcom
             normal: -DVec2::X,
         },
     ];
+    if !rz {
+        walls.push(Boundary::Wall {
+            point: DVec2::ZERO,
+            normal: DVec2::X,
+        });
+    }
+    let name = if rz {
+        "noh-planar (rz)"
+    } else {
+        "noh-planar (plane column)"
+    };
     let sim = simulation(p, gas(GAMMA)?, scheme, walls, None)?;
-    finish_with("noh-planar (rz)", 1, n, dx, sim, |s| Radial::along(s, 1))
+    finish_with(name, 1, n, dx, sim, |s| Radial::along(s, 1))
 }
 
 /// Cylindrical Noh with `n` lattice spacings across the radius.
