@@ -259,11 +259,9 @@ impl Problem {
             Problem::NohPlanar => noh::run_planar_column(n, scheme, true),
             Problem::HelImpact => hel_impact::run(n, scheme, RZ_COLUMN),
             Problem::Contact => contact::run(n, scheme, RZ_COLUMN),
-            _ => Err(crate::SolverError::BadConfig {
-                field: "geometry",
-                value: 0.0,
-                reason: "this problem has no axisymmetric (RZ) form (noh-planar, hel-impact, contact, sedov-3d, noh-spherical and taylor have)",
-            }),
+            _ => Err(no_such_form(
+                "this problem has no axisymmetric (RZ) form (noh-planar, hel-impact, contact, sedov-3d, noh-spherical and taylor have)",
+            )),
         }
     }
 
@@ -279,11 +277,7 @@ impl Problem {
         let n = self.resolve(resolution, &scheme)?;
         match self {
             Problem::NohPlanar => noh::run_planar_column(n, scheme, false),
-            _ => Err(crate::SolverError::BadConfig {
-                field: "geometry",
-                value: 0.0,
-                reason: "only noh-planar has a plane 2-D column form",
-            }),
+            _ => Err(no_such_form("only noh-planar has a plane 2-D column form")),
         }
     }
 
@@ -335,6 +329,15 @@ impl Problem {
             Problem::Taylor => taylor::run(n, scheme),
             Problem::TensileBar => tensile_bar::run(n, scheme),
         }
+    }
+}
+
+/// The error for a problem run in a geometry it has no form in.
+fn no_such_form(reason: &'static str) -> crate::SolverError {
+    crate::SolverError::BadConfig {
+        field: "geometry",
+        value: 0.0,
+        reason,
     }
 }
 
