@@ -38,6 +38,8 @@
 //! * [`fibonacci`] — the variable-resolution placement ([`FibonacciPlacement`]).
 //! * [`rz`] — placement in the meridional half-plane for axisymmetric (RZ) runs
 //!   ([`rz_lattice`], [`RzLayeredPlacement`]; masses per radian).
+//! * [`revolve`] — 3-D particles from an RZ placement, each ring as points evenly
+//!   spaced around the axis ([`revolve`]).
 //! * [`placement`] — the common result [`BodyParticles`].
 //! * [`quality`] — [`closest_approach`], the closest pair relative to the local spacing.
 //! * [`error`] — [`GeometryError`].
@@ -57,6 +59,7 @@ pub mod half_space;
 pub mod lattice;
 pub mod placement;
 pub mod quality;
+pub mod revolve;
 pub mod rz;
 pub mod shape;
 pub mod sphere;
@@ -70,6 +73,7 @@ pub use half_space::HalfSpace;
 pub use lattice::{cubic_lattice, hcp_lattice, hexagonal_lattice};
 pub use placement::BodyParticles;
 pub use quality::{CloseApproach, closest_approach};
+pub use revolve::{revolve, ring_point_count};
 pub use rz::{RzLayeredPlacement, rz_lattice, rz_layer_point_count};
 pub use shape::{Aabb, Shape, estimate_volume, unit_ball_volume};
 pub use sphere::Sphere;

@@ -14,11 +14,13 @@
 //!   [`cubic_lattice`](crate::cubic_lattice), mass ρΔ²r (the exact ring mass of its cell).
 //! * [`RzLayeredPlacement`]: the 2-D analogue of the variable-resolution Fibonacci layers
 //!   (paper §4): half-circular layers about an origin on the axis, each one spacing thick,
-//!   the spacing growing by q per layer; each particle carries the exact ring mass of its
-//!   annular sector.
+//!   the spacing growing by q per layer; each particle carries the ring mass of the part
+//!   of its annular sector inside the body, and the masses are then rescaled so that the
+//!   body has its exact mass, as the 3-D layers do.
 //!
-//! Masses are not rescaled: a particle next to the surface carries its whole cell or
-//! sector, so Σ m differs from ρV/2π by the raw error (a boundary effect, of either sign).
+//! The lattice's masses are not rescaled: a particle next to the surface carries its whole
+//! cell, so Σ m differs from ρV/2π by the raw error (a boundary effect, of either sign), as
+//! for the 3-D lattices.
 
 use crate::error::{GeometryError, bounds_of, check_candidates, positive_finite};
 use crate::fibonacci::{Shell, shells};
@@ -125,8 +127,11 @@ pub fn rz_lattice<S: Shape<DVec3> + ?Sized>(
 /// the 3-D layers ([`shells`]: b_k = Σ_(i≤k) Δ_i, points at the mid radius R_k). Its n_k
 /// points sit at the polar angles θ_j = (j + ½)π/n_k (θ from +z), at
 /// r = R_k sin θ_j > 0, z = origin_z + R_k cos θ_j, and own the annular sectors
-/// [jπ/n_k, (j+1)π/n_k]. Only points inside the body are kept, each with the exact ring
-/// mass per radian of its sector, ρ (b_k³ − b_(k−1)³)/3 · (cos θ_a − cos θ_b).
+/// [jπ/n_k, (j+1)π/n_k]. Only points inside the body are kept, each with the ring mass
+/// per radian of the part of its sector inside the body: ρ (b_k³ − b_(k−1)³)/3 ·
+/// (cos θ_a − cos θ_b) in the interior, times the inside fraction (8 × 8 sub-cells, at
+/// least ⅛) at a surface. `raw_mass_error` is 2π Σ m/(ρV) − 1 of these; then, when the
+/// shape knows its volume, all masses are rescaled so that 2π Σ m = ρV.
 ///
 /// **Point count.** n_k is the even number nearest π R_k/Δ_k (at least 2), so the arc
 /// spacing is Δ_k up to rounding. Even rather than just nearest: then θ = π/2 is a sector
@@ -249,32 +254,93 @@ impl RzLayeredPlacement {
             masses.push(m);
             spacing.push(d);
         }
-        Ok(finish(
+        let mut body = finish(
             shape,
             positions,
             masses,
             spacing,
             self.density,
             self.first_spacing,
-        ))
+        );
+        // As the 3-D layers do (docs/placement.md §2): the raw error is kept, then the
+        // masses are rescaled so that the body has its exact mass.
+        if let Some(v) = body.exact_volume {
+            let scale = self.density * v / (TAU * body.total_mass());
+            body.masses.iter_mut().for_each(|m| *m *= scale);
+        }
+        Ok(body)
     }
 
-    /// The kept points of one layer: position, ring mass per radian, spacing.
+    /// The kept points of one layer: position, ring mass per radian, spacing. A point
+    /// inside the body carries the part of its sector inside the body
+    /// ([`inside_fraction`](Self::inside_fraction), at least an eighth); the inside part
+    /// of a sector whose point is outside goes to the layer's kept point nearest in angle
+    /// (lost only when the layer keeps none).
     fn layer<S: Shape<DVec3> + ?Sized>(&self, s: &Shell, shape: &S) -> Vec<(DVec2, f64, f64)> {
         let n = rz_layer_point_count(s.radius, s.spacing);
         let radial = self.density * (s.outer.powi(3) - s.inner.powi(3)) / 3.0;
         let dt = PI / n as f64;
-        (0..n)
-            .filter_map(|j| {
+        // (j, point, inside mass, kept)
+        let sectors: Vec<(usize, DVec2, f64, bool)> = (0..n)
+            .map(|j| {
                 let theta = (j as f64 + 0.5) * dt;
                 let p = DVec2::new(
                     s.radius * theta.sin(),
                     self.origin_z + s.radius * theta.cos(),
                 );
                 let (a, b) = (j as f64 * dt, (j + 1) as f64 * dt);
-                (p.x > 0.0 && shape.contains(point3(p)))
-                    .then(|| (p, radial * (a.cos() - b.cos()), s.spacing))
+                let kept = p.x > 0.0 && shape.contains(point3(p));
+                let mut inside = self.inside_fraction(s, (a, b), shape);
+                if kept {
+                    inside = inside.max(0.125);
+                }
+                (j, p, inside * radial * (a.cos() - b.cos()), kept)
             })
-            .collect()
+            .collect();
+        let mut out: Vec<(usize, DVec2, f64)> = sectors
+            .iter()
+            .filter(|s| s.3)
+            .map(|&(j, p, m, _)| (j, p, m))
+            .collect();
+        if !out.is_empty() {
+            for &(j, _, m, kept) in &sectors {
+                if !kept && m > 0.0 {
+                    let k = (0..out.len())
+                        .min_by_key(|&k| out[k].0.abs_diff(j))
+                        .unwrap_or(0);
+                    out[k].2 += m;
+                }
+            }
+        }
+        out.into_iter().map(|(_, p, m)| (p, m, s.spacing)).collect()
+    }
+
+    /// The fraction of the ring volume of the sector [inner, outer] × [θ_a, θ_b] of shell
+    /// `s` that lies inside `shape`, by the midpoint rule on 8 × 8 sub-cells weighted by
+    /// the ring volume element R² sin θ dR dθ. 1 in the interior; at a surface the particle
+    /// then carries the body actually next to it rather than its whole sector (a 2 mm
+    /// layer about the centre of a 3 mm sphere reaches 4 mm: the whole sectors would
+    /// give the sphere 2.4 times its mass).
+    fn inside_fraction<S: Shape<DVec3> + ?Sized>(
+        &self,
+        s: &Shell,
+        (ta, tb): (f64, f64),
+        shape: &S,
+    ) -> f64 {
+        const SUB: usize = 8;
+        let (mut inside, mut all) = (0.0, 0.0);
+        for i in 0..SUB {
+            let radius = s.inner + (i as f64 + 0.5) / SUB as f64 * (s.outer - s.inner);
+            for j in 0..SUB {
+                let theta = ta + (j as f64 + 0.5) / SUB as f64 * (tb - ta);
+                let w = radius * radius * theta.sin();
+                let p = DVec2::new(radius * theta.sin(), self.origin_z + radius * theta.cos());
+                all += w;
+                if shape.contains(point3(p)) {
+                    inside += w;
+                }
+            }
+        }
+        inside / all
     }
 }

@@ -13,6 +13,9 @@ pub enum VerifyGeometry {
     /// `noh-planar` only: the RZ run's column as a plane 2-D column
     /// ([`Problem::run_plane_column`]), to separate the RZ terms' error from 2-D SPH's.
     Plane,
+    /// `taylor` only: 3-D with the rod placed as RZ rings revolved about the axis
+    /// ([`Problem::run_rings`]), a placement without the cubic lattice's in-plane axes.
+    Rings,
 }
 
 /// `sph-impact verify`: run, print metrics (a table or one JSON object), and write the
@@ -29,14 +32,17 @@ pub fn verify(
     let scheme = scheme_with_overrides(problem.default_scheme(), scheme)?;
     let rz = geometry == VerifyGeometry::Rz;
     let outcome = match (deposit, geometry) {
-        (Some(_), VerifyGeometry::Plane) => {
+        (Some(_), VerifyGeometry::Plane | VerifyGeometry::Rings) => {
             return Err(
-                "--deposit is for the Sedov problems, --geometry plane for noh-planar".into(),
+                "--deposit is for the Sedov problems, --geometry plane for noh-planar and \
+                 --geometry rings for taylor"
+                    .into(),
             );
         }
         (Some(d), _) => problem.run_sedov(resolution, scheme, d, rz),
         (None, VerifyGeometry::Rz) => problem.run_rz(resolution, scheme),
         (None, VerifyGeometry::Plane) => problem.run_plane_column(resolution, scheme),
+        (None, VerifyGeometry::Rings) => problem.run_rings(resolution, scheme),
         (None, VerifyGeometry::Own) => problem.run_with(resolution, scheme),
     }
     .map_err(|e| e.to_string())?;

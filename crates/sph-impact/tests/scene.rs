@@ -253,6 +253,9 @@ fn other_bad_values() {
     let m = message(&format!("{BASE}spall_damage = 0.0\n"));
     assert!(m.contains("`diagnostics.spall_damage`"), "{m}");
     assert!(m.contains("must be in (0, 1]"), "{m}");
+    let m = message(&format!("{BASE}rubble_density = 1.0\n"));
+    assert!(m.contains("`diagnostics.rubble_density`"), "{m}");
+    assert!(m.contains("must be in [0, 1)"), "{m}");
     let m = message(&edit("name = \"target\"", "name = \"projectile\""));
     assert!(m.contains("used twice"), "{m}");
 }
@@ -510,7 +513,7 @@ fn rz_shapes_must_be_axisymmetric() {
         (
             "axis = [0.0, 0.0, 1.0]",
             "axis = [1.0, 0.0, 0.0]",
-            "scene.toml:15:65: body \"target\": `shape.axis`: not axisymmetric about the z axis, as geometry = \"rz\" needs: the cylinder's axis must be the z axis",
+            "scene.toml:15:65: body \"target\": `shape.axis`: not axisymmetric about the z axis (geometry = \"rz\" and placement kind \"rings\" need it): the cylinder's axis must be the z axis",
         ),
         (
             "velocity = [0.0, 0.0, -3900.0]",
@@ -537,6 +540,81 @@ fn rz_shapes_must_be_axisymmetric() {
         "{m}"
     );
     assert!(m.contains("spheres and cylinders"), "{m}");
+}
+
+/// `RZ_BASE` in 3-D (`geometry`) with both bodies placed as rings.
+fn rings_scene(geometry: &str) -> Scene {
+    let text = RZ_BASE
+        .replacen(
+            "geometry = \"rz\"",
+            &format!("geometry = \"{geometry}\""),
+            1,
+        )
+        .replace("kind = \"variable\"", "kind = \"rings\"");
+    Scene::from_toml_str(&text, "scene.toml").unwrap()
+}
+
+#[test]
+fn a_quarter_model_runs_as_the_whole_body() {
+    // The same rings revolved: the full body holds four copies of the quarter, mirrored,
+    // so the quarter between its two mirror planes must follow the full run.
+    let options = RunOptions {
+        quiet: true,
+        end_time: Some(0.1e-6),
+        ..RunOptions::default()
+    };
+    let mut out = Vec::new();
+    for geometry in ["3d", "3d-quarter"] {
+        let scene = rings_scene(geometry);
+        let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("scene-rings-{geometry}"));
+        let _ = std::fs::remove_dir_all(&dir);
+        out.push((scene.build().unwrap(), run(&scene, &dir, &options).unwrap()));
+    }
+    let ((full_built, full), (quarter_built, quarter)) = (&out[0], &out[1]);
+    assert_eq!(
+        4 * quarter_built.simulation.particle_count(),
+        full_built.simulation.particle_count()
+    );
+    assert_eq!(quarter.geometry, GeometryKind::ThreeDQuarter);
+    assert_eq!(full.steps, quarter.steps);
+    for (b, q) in full_built.bodies.iter().zip(&quarter_built.bodies) {
+        assert!((q.mass / b.mass - 1.0).abs() < 1e-12, "{}", b.name);
+        assert!(b.mass_error().unwrap().abs() < 1e-12, "{}", b.name);
+    }
+    let close = |a: f64, b: f64, what: &str| {
+        assert!(
+            (a / b - 1.0).abs() < 1e-9,
+            "{what}: quarter {a} against full {b}"
+        );
+    };
+    close(
+        quarter.initial.momentum[2],
+        full.initial.momentum[2],
+        "p_z at t = 0",
+    );
+    close(quarter.last.momentum[2], full.last.momentum[2], "p_z");
+    close(quarter.last.kinetic, full.last.kinetic, "kinetic energy");
+    close(quarter.last.internal, full.last.internal, "internal energy");
+    close(quarter.beta, full.beta, "beta");
+    println!(
+        "full {} particles, quarter {}: KE {:.9e} against {:.9e}, beta {} against {}",
+        full_built.simulation.particle_count(),
+        quarter_built.simulation.particle_count(),
+        full.last.kinetic,
+        quarter.last.kinetic,
+        full.beta,
+        quarter.beta
+    );
+}
+
+#[test]
+fn a_quarter_model_needs_rings() {
+    let text = RZ_BASE.replacen("geometry = \"rz\"", "geometry = \"3d-quarter\"", 1);
+    let m = message(&text);
+    assert!(
+        m.starts_with("scene.toml:9:") && m.contains("`placement.kind`") && m.contains("\"rings\""),
+        "{m}"
+    );
 }
 
 #[test]

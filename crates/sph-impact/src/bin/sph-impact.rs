@@ -81,9 +81,10 @@ enum Command {
         #[arg(long)]
         json: bool,
         /// Geometry: `3d` (the problem's own), `rz` (axisymmetric: noh-planar,
-        /// noh-spherical, sedov-3d, taylor, hel-impact, contact) or `plane` (noh-planar
-        /// only: the RZ run's column in plane 2-D, for comparison).
-        #[arg(long, default_value = "3d", value_parser = ["3d", "rz", "plane"])]
+        /// noh-spherical, sedov-3d, taylor, hel-impact, contact), `plane` (noh-planar
+        /// only: the RZ run's column in plane 2-D, for comparison) or `rings` (taylor
+        /// only: 3-D with the rod placed as RZ rings revolved about the axis).
+        #[arg(long, default_value = "3d", value_parser = ["3d", "rz", "plane", "rings"])]
         geometry: String,
         /// Sedov only: how the blast energy goes into the centre, `top-hat` (default:
         /// equal specific energy within one support radius) or `kernel` (kernel-weighted).
@@ -143,6 +144,7 @@ fn main() -> ExitCode {
             match geometry.as_str() {
                 "rz" => sph_impact::cli::VerifyGeometry::Rz,
                 "plane" => sph_impact::cli::VerifyGeometry::Plane,
+                "rings" => sph_impact::cli::VerifyGeometry::Rings,
                 _ => sph_impact::cli::VerifyGeometry::Own,
             },
             deposit,

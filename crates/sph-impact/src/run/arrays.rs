@@ -19,13 +19,14 @@ pub(crate) struct Arrays {
 }
 
 impl Arrays {
-    /// Copies the current state of `sim`.
-    pub fn of<D: SceneDimension>(sim: &Simulation<D, KernelChoice>) -> Self {
+    /// Copies the current state of `sim`; each particle's mass is that of all the
+    /// `copies` it stands for (4 in a 3-D quarter model, else 1; in RZ also × 2π).
+    pub fn of<D: SceneDimension>(sim: &Simulation<D, KernelChoice>, copies: f64) -> Self {
         let p = &sim.state.particles;
         Self {
             position: p.position.iter().map(|&x| D::to_scene(x)).collect(),
             velocity: p.velocity.iter().map(|&v| D::to_scene(v)).collect(),
-            mass: p.mass.iter().map(|m| D::BODY_FACTOR * m).collect(),
+            mass: p.mass.iter().map(|m| D::BODY_FACTOR * copies * m).collect(),
             body: p.material.clone(),
             damage: sim.damage(),
             density: p.density.clone(),

@@ -49,9 +49,14 @@ impl Job<'_> {
         bodies: Vec<BodyInfo>,
     ) -> Result<RunSummary, RunError> {
         let (scene, dir, end_time) = (self.scene, self.dir, self.end_time);
+        let copies = scene.symmetry_copies();
         let setup = scene
             .diagnostic_setup(self.options.resolution_scale)
             .map_err(|e| scene.locate(e))?;
+        let target_density = setup
+            .targets
+            .first()
+            .map_or(f64::NAN, |&t| bodies[t].material.density);
         let mut measurer = Measurer {
             targets: setup.targets.iter().map(|&t| t as u16).collect(),
             projectile_mass: bodies[setup.projectile].mass,
@@ -64,12 +69,13 @@ impl Job<'_> {
             setup,
             geometry: D::KIND,
             top_offset: 0.0,
+            target_density,
         };
-        measurer.calibrate(&Arrays::of(&sim))?;
+        measurer.calibrate(&Arrays::of(&sim, copies))?;
         let n = sim.state.particles.len();
         let interval = scene.output.interval(end_time);
         let history_every = scene.output.history_every.unwrap_or(1);
-        let initial = Totals::of(&sim);
+        let initial = Totals::of(&sim, copies);
         let mut history = History::create(&dir.join("history.csv"))?;
         let mut pvd = Pvd::new();
         let mut progress = Progress::new(self.options.quiet, end_time, n);
@@ -81,14 +87,14 @@ impl Job<'_> {
                                  dt: f64,
                                  crater: &mut (f64, f64)|
          -> Result<(), RunError> {
-            let a = Arrays::of(sim);
+            let a = Arrays::of(sim, copies);
             let (pressure, _) = sim.pressure_and_sound_speed();
             snapshot::write_snapshot(sim, &a, &pressure, dir, snapshot_index, &mut pvd)?;
             snapshot_index += 1;
             if let Some(c) = measurer.crater(&a)? {
                 *crater = (c.depth, c.diameter);
             }
-            history.push(row(sim, &measurer.beta(&a)?, *crater, dt, true))?;
+            history.push(row(sim, copies, &measurer.beta(&a)?, *crater, dt, true))?;
             Ok(())
         };
         take_snapshot(&sim, &mut history, 0.0, &mut crater)?;
@@ -122,8 +128,15 @@ impl Job<'_> {
                     next_snapshot += interval;
                 }
             } else if steps.is_multiple_of(history_every) {
-                let a = Arrays::of(&sim);
-                history.push(row(&sim, &measurer.beta(&a)?, crater, info.dt, false))?;
+                let a = Arrays::of(&sim, copies);
+                history.push(row(
+                    &sim,
+                    copies,
+                    &measurer.beta(&a)?,
+                    crater,
+                    info.dt,
+                    false,
+                ))?;
             }
             progress.update(sim.state.time, steps, false);
         }
@@ -148,12 +161,13 @@ impl Job<'_> {
 /// A history row of the current state (totals of the whole bodies).
 fn row<D: SceneDimension>(
     sim: &Simulation<D, KernelChoice>,
+    copies: f64,
     beta: &BetaMeasure,
     crater: (f64, f64),
     dt: f64,
     crater_measured: bool,
 ) -> HistoryRow {
-    let c = Totals::of(sim);
+    let c = Totals::of(sim, copies);
     HistoryRow {
         t: sim.state.time,
         step: sim.state.step,

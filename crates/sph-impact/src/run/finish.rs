@@ -28,7 +28,7 @@ pub(crate) fn summarise<D: SceneDimension>(
     } = run;
     let (dir, setup) = (job.dir, &measurer.setup);
     let n = sim.state.particles.len();
-    let a = Arrays::of(&sim);
+    let a = Arrays::of(&sim, job.scene.symmetry_copies());
     let view = a.view();
     let beta = measurer.beta(&a)?;
     let final_crater = measurer.crater(&a)?;
@@ -93,11 +93,11 @@ pub(crate) fn summarise<D: SceneDimension>(
     plots::ejecta(&ejecta_bins, &plot("ejecta.png"))?;
     plots::projectile_energy(&e_hist, thermal.as_ref(), &plot("projectile_energy.png"))?;
 
-    let last = Totals::of(&sim);
+    let last = Totals::of(&sim, job.scene.symmetry_copies());
     let c = final_crater.unwrap_or_default();
     let active = |x: f64| if measurer.active() { x } else { f64::NAN };
     let mut summary = RunSummary {
-        geometry: D::KIND,
+        geometry: job.scene.geometry,
         crater_diameter_m: active(c.diameter),
         crater_diameter_removed_m: active(c.diameter_removed),
         bowl_diameter_m: active(c.bowl_diameter),

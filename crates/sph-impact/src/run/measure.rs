@@ -5,8 +5,8 @@ use crate::run::arrays::Arrays;
 use crate::scene::{DiagnosticSetup, GeometryKind};
 use serde::Serialize;
 use sph_diagnostics::{
-    Crater, CraterOptions, EjectaCriterion, Geometry, ProjectileDebris, beta_from_ejecta,
-    beta_from_target, crater, ejecta,
+    Crater, CraterOptions, DensityCut, EjectaCriterion, Geometry, ProjectileDebris,
+    beta_from_ejecta, beta_from_target, crater, ejecta,
 };
 
 /// What the diagnostics need that does not change during a run.
@@ -23,6 +23,8 @@ pub(crate) struct Measurer {
     /// Height of the surface above the top particle layer (m), from t = 0
     /// ([`Measurer::calibrate`]).
     pub top_offset: f64,
+    /// Reference density of the (first) target's material (kg/m³), for the rubble cut.
+    pub target_density: f64,
 }
 
 /// β and the ejecta at one instant.
@@ -78,12 +80,16 @@ impl Measurer {
     /// measured offset of the top layer, the setup's spall damage.
     pub fn crater_options(&self) -> CraterOptions {
         let geometry = match self.geometry {
-            GeometryKind::ThreeD => Geometry::ThreeD,
+            GeometryKind::ThreeD | GeometryKind::ThreeDQuarter => Geometry::ThreeD,
             GeometryKind::Rz => Geometry::Axisymmetric,
         };
         let mut o = CraterOptions::new(geometry, self.setup.crater_bin);
         o.top_offset = self.top_offset;
         o.spall_damage = self.setup.spall_damage;
+        o.density_cut = self.setup.rubble_density.map(|f| DensityCut {
+            reference_density: self.target_density,
+            min_fraction: f,
+        });
         o
     }
 
@@ -114,5 +120,77 @@ impl Measurer {
             return Ok(None);
         }
         crater(&a.view(), &self.criterion(), &self.crater_options()).map(Some)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn measurer(rubble_density: Option<f64>) -> Measurer {
+        Measurer {
+            targets: vec![1],
+            setup: DiagnosticSetup {
+                projectile: 0,
+                targets: vec![1],
+                surface_z: 0.0,
+                impact_speed: 1000.0,
+                crater_bin: 1e-3,
+                ejecta_tolerance: 0.0,
+                ejecta_bin: 0.02,
+                spall_damage: None,
+                rubble_density,
+            },
+            projectile_mass: 1.0,
+            initial_target_momentum_z: 0.0,
+            geometry: GeometryKind::Rz,
+            top_offset: 0.0,
+            target_density: 2876.0,
+        }
+    }
+
+    /// A crater 3 mm in radius with its floor at z = −10.5 mm, and above the floor in
+    /// each of its bins a dilated ring (0.3 ρ0) at z = −6 mm, below the surface and at
+    /// rest, so not ejecta.
+    fn crater_with_rubble(m: &Measurer) -> Crater {
+        let n = 40;
+        let mut a = Arrays {
+            position: Vec::new(),
+            velocity: Vec::new(),
+            mass: Vec::new(),
+            body: Vec::new(),
+            damage: Vec::new(),
+            density: Vec::new(),
+            specific_energy: Vec::new(),
+        };
+        for k in 0..n {
+            let r = (k as f64 + 0.5) * 1e-3;
+            let z = if k < 3 { -10.5e-3 } else { -0.5e-3 };
+            for (z, rho) in [(z, 2876.0), (z - 1e-3, 2876.0)] {
+                a.position.push([r, 0.0, z]);
+                a.density.push(rho);
+            }
+        }
+        for r in [0.5e-3, 1.5e-3, 2.5e-3] {
+            a.position.push([r, 0.0, -6.0e-3]);
+            a.density.push(0.3 * 2876.0);
+        }
+        let count = a.position.len();
+        a.velocity = vec![[0.0; 3]; count];
+        a.mass = vec![1.0; count];
+        a.body = vec![1; count];
+        a.damage = vec![0.0; count];
+        a.specific_energy = vec![0.0; count];
+        m.crater(&a).unwrap().unwrap()
+    }
+
+    #[test]
+    fn loose_rubble_does_not_fill_the_crater() {
+        let cut = crater_with_rubble(&measurer(Some(0.5)));
+        let kept = crater_with_rubble(&measurer(None));
+        // With the cut the floor is the rock's; without it the rubble is the floor.
+        assert!((cut.depth - 10.5e-3).abs() < 1e-12, "{}", cut.depth);
+        assert!((kept.depth - 6.0e-3).abs() < 1e-12, "{}", kept.depth);
+        assert!((cut.diameter - 6.0e-3).abs() < 1e-12, "{}", cut.diameter);
     }
 }

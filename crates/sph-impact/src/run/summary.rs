@@ -23,13 +23,20 @@ pub struct Totals {
 }
 
 impl Totals {
-    /// The totals of a simulation's current state.
-    pub(crate) fn of<D: SceneDimension>(sim: &Simulation<D, KernelChoice>) -> Self {
+    /// The totals of a simulation's current state, of the whole bodies: the modelled
+    /// part's times `copies` (4 for a 3-D quarter model, else 1) and the dimension's
+    /// factor. With copies > 1 the x and y momenta are zero by symmetry.
+    pub(crate) fn of<D: SceneDimension>(sim: &Simulation<D, KernelChoice>, copies: f64) -> Self {
         let c = sim.conserved();
-        let f = D::BODY_FACTOR;
+        let f = D::BODY_FACTOR * copies;
+        let mut momentum = D::to_scene(c.momentum).map(|p| f * p);
+        if copies > 1.0 {
+            momentum[0] = 0.0;
+            momentum[1] = 0.0;
+        }
         Self {
             mass: f * c.mass,
-            momentum: D::to_scene(c.momentum).map(|p| f * p),
+            momentum,
             kinetic: f * c.kinetic,
             internal: f * c.internal,
         }
@@ -70,7 +77,7 @@ impl BodyDamageSummary {
 /// Everything `summary.json` holds (SI units; NaN is written as null).
 #[derive(Clone, Debug, Serialize)]
 pub struct RunSummary {
-    /// `"3d"` or `"rz"`.
+    /// `"3d"`, `"3d-quarter"` or `"rz"`.
     pub geometry: GeometryKind,
     /// Crater diameter including the spall zone (m).
     pub crater_diameter_m: f64,

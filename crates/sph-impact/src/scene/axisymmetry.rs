@@ -57,19 +57,10 @@ impl BodySpec {
     /// Checks that the body suits an RZ scene (module docs); `index` is its place in the
     /// scene, for the error's key.
     pub(crate) fn check_axisymmetric(&self, index: usize) -> Result<(), SceneError> {
-        let err = |key: &str, reason: String| {
-            SceneError::in_body(
-                index,
-                &self.name,
-                key,
-                SceneErrorKind::NotAxisymmetric(reason),
-            )
-        };
-        if let Some((key, reason)) = self.shape.axisymmetry_problem() {
-            return Err(err(&format!("shape.{key}"), reason));
-        }
+        self.check_revolvable(index)?;
         if !on_axis(self.velocity) {
-            return Err(err(
+            return Err(self.not_axisymmetric(
+                index,
                 "velocity",
                 format!(
                     "the velocity must be along z, v_x = v_y = 0, not (v_x, v_y) = ({}, {}) m/s",
@@ -77,10 +68,22 @@ impl BodySpec {
                 ),
             ));
         }
-        if let PlacementSpec::Variable { origin, .. } = self.placement
+        Ok(())
+    }
+
+    /// Checks that the body's shape and its layers' origin are symmetric about the z
+    /// axis, as an RZ scene and a 3-D placement of kind `rings` need (its velocity may
+    /// point anywhere in 3-D).
+    pub(crate) fn check_revolvable(&self, index: usize) -> Result<(), SceneError> {
+        if let Some((key, reason)) = self.shape.axisymmetry_problem() {
+            return Err(self.not_axisymmetric(index, &format!("shape.{key}"), reason));
+        }
+        if let PlacementSpec::Variable { origin, .. } | PlacementSpec::Rings { origin, .. } =
+            self.placement
             && !on_axis(origin)
         {
-            return Err(err(
+            return Err(self.not_axisymmetric(
+                index,
                 "placement.origin",
                 format!(
                     "the layers' origin must be on the z axis, x = y = 0, not {}",
@@ -89,5 +92,14 @@ impl BodySpec {
             ));
         }
         Ok(())
+    }
+
+    fn not_axisymmetric(&self, index: usize, key: &str, reason: String) -> SceneError {
+        SceneError::in_body(
+            index,
+            &self.name,
+            key,
+            SceneErrorKind::NotAxisymmetric(reason),
+        )
     }
 }

@@ -87,7 +87,8 @@ impl ShapeSpec {
 }
 
 /// How a body is filled with particles. TOML: `placement = { kind = "lattice",
-/// spacing = … }` or `{ kind = "variable", origin = […], a_res = …, q = … }`.
+/// spacing = … }`, `{ kind = "variable", origin = […], a_res = …, q = … }` or
+/// `{ kind = "rings", origin = […], a_res = …, q = … }`.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(tag = "kind", rename_all = "kebab-case", deny_unknown_fields)]
 pub enum PlacementSpec {
@@ -106,6 +107,19 @@ pub enum PlacementSpec {
         /// Spacing ratio q ≥ 1 between layers (1 is uniform).
         q: f64,
     },
+    /// The RZ variable-resolution layers about `origin` (on the z axis), each ring
+    /// revolved into points one spacing apart around the axis
+    /// ([`sph_geometry::revolve`]): in 3-D a placement with no preferred azimuth and the
+    /// same rings as the RZ run of the scene; in RZ the same as `Variable`. The body
+    /// must be symmetric about the z axis.
+    Rings {
+        /// Point of highest resolution (m), on the z axis.
+        origin: [f64; 3],
+        /// First-layer spacing A_res (m), > 0.
+        a_res: f64,
+        /// Spacing ratio q ≥ 1 between layers (1 is uniform).
+        q: f64,
+    },
 }
 
 impl PlacementSpec {
@@ -113,7 +127,7 @@ impl PlacementSpec {
     pub fn finest_spacing(&self) -> f64 {
         match *self {
             PlacementSpec::Lattice { spacing } => spacing,
-            PlacementSpec::Variable { a_res, .. } => a_res,
+            PlacementSpec::Variable { a_res, .. } | PlacementSpec::Rings { a_res, .. } => a_res,
         }
     }
 
@@ -124,6 +138,11 @@ impl PlacementSpec {
                 spacing: spacing / resolution_scale,
             },
             PlacementSpec::Variable { origin, a_res, q } => PlacementSpec::Variable {
+                origin,
+                a_res: a_res / resolution_scale,
+                q,
+            },
+            PlacementSpec::Rings { origin, a_res, q } => PlacementSpec::Rings {
                 origin,
                 a_res: a_res / resolution_scale,
                 q,
@@ -148,7 +167,8 @@ impl PlacementSpec {
                     return invalid("spacing", spacing, "the spacing must be positive (m)");
                 }
             }
-            PlacementSpec::Variable { origin, a_res, q } => {
+            PlacementSpec::Variable { origin, a_res, q }
+            | PlacementSpec::Rings { origin, a_res, q } => {
                 if !origin.iter().all(|x| x.is_finite()) {
                     return invalid("origin", f64::NAN, "the origin must be finite (m)");
                 }

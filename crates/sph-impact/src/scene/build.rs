@@ -1,7 +1,8 @@
 //! From a scene to a running simulation, 3-D or axisymmetric (RZ): the bodies' particles
 //! in one store (body k's particles contiguous, material id k), each body's solver
 //! material with its own Benz–Asphaug flaws, the scheme, the kernel; no boundaries (every
-//! surface is free; in RZ the solver adds the axis as a mirror).
+//! surface is free; in RZ the solver adds the axis as a mirror) except the two symmetry
+//! planes of a 3-D quarter model, x = 0 and y = 0, as mirror walls.
 
 use crate::materials::MaterialSpec;
 use crate::scene::Scene;
@@ -9,8 +10,9 @@ use crate::scene::dimension::{SceneDimension, SceneSimulation};
 use crate::scene::error::{SceneError, SceneErrorKind};
 use crate::scene::place::PlacedBody;
 use crate::scene::settings::GeometryKind;
-use crate::solver::{Material, Simulation};
+use crate::solver::{Boundary, Material, Simulation};
 use serde::Serialize;
+use sph_core::glam::DVec3;
 use sph_core::{Dim2, Dim3, ParticleInit, Particles};
 use std::ops::Range;
 
@@ -86,8 +88,18 @@ impl Scene {
             ));
         }
         let (simulation, bodies) = match self.geometry {
-            GeometryKind::ThreeD => self.assemble::<Dim3>(&placed)?,
-            GeometryKind::Rz => self.assemble::<Dim2>(&placed)?,
+            GeometryKind::ThreeD => self.assemble::<Dim3>(&placed, Vec::new())?,
+            // The quarter x > 0, y > 0: the planes x = 0 and y = 0 are mirrors.
+            GeometryKind::ThreeDQuarter => self.assemble::<Dim3>(
+                &placed,
+                [DVec3::X, DVec3::Y]
+                    .map(|normal| Boundary::Wall {
+                        point: DVec3::ZERO,
+                        normal,
+                    })
+                    .to_vec(),
+            )?,
+            GeometryKind::Rz => self.assemble::<Dim2>(&placed, Vec::new())?,
         };
         Ok(Built { simulation, bodies })
     }
@@ -97,6 +109,7 @@ impl Scene {
     fn assemble<D: SceneDimension>(
         &self,
         placed: &[PlacedBody],
+        boundaries: Vec<Boundary<D>>,
     ) -> Result<(SceneSimulation, Vec<BodyInfo>), SceneError> {
         let scheme = self.scheme();
         debug_assert_eq!(scheme.geometry, D::GEOMETRY);
@@ -148,7 +161,7 @@ impl Scene {
             materials,
             scheme,
             kernel,
-            Vec::new(),
+            boundaries,
             Some(spacing0),
         )
         .map_err(|e| {

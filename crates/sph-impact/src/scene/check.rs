@@ -5,6 +5,7 @@
 
 use crate::materials::MaterialSpec;
 use crate::scene::Scene;
+use crate::scene::body::PlacementSpec;
 use crate::scene::error::{SceneError, SceneErrorKind};
 use crate::scene::settings::GeometryKind;
 
@@ -32,8 +33,27 @@ impl Scene {
         }
         for (i, b) in self.bodies.iter().enumerate() {
             b.check(i)?;
-            if self.geometry == GeometryKind::Rz {
+            if self.geometry == GeometryKind::ThreeDQuarter
+                && !matches!(b.placement, PlacementSpec::Rings { .. })
+            {
+                return Err(SceneError::in_body(
+                    i,
+                    &b.name,
+                    "placement.kind",
+                    SceneErrorKind::Geometry(
+                        "geometry = \"3d-quarter\" needs every body placed as kind \"rings\" \
+                         (the placement that is exactly four-fold symmetric)"
+                            .into(),
+                    ),
+                ));
+            }
+            if matches!(
+                self.geometry,
+                GeometryKind::Rz | GeometryKind::ThreeDQuarter
+            ) {
                 b.check_axisymmetric(i)?;
+            } else if matches!(b.placement, PlacementSpec::Rings { .. }) {
+                b.check_revolvable(i)?;
             }
             if self.bodies[..i].iter().any(|o| o.name == b.name) {
                 return Err(SceneError::in_body(

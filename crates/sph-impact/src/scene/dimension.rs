@@ -93,7 +93,7 @@ impl SceneDimension for Dim3 {
     const GEOMETRY: Geometry = Geometry::Cartesian;
     fn placed(p: &PlacedParticles) -> Option<&BodyParticles<DVec3>> {
         match p {
-            PlacedParticles::ThreeD(b) => Some(b),
+            PlacedParticles::ThreeD(b) | PlacedParticles::Quarter(b) => Some(b),
             PlacedParticles::Rz(_) => None,
         }
     }
@@ -118,7 +118,7 @@ impl SceneDimension for Dim2 {
     fn placed(p: &PlacedParticles) -> Option<&BodyParticles<DVec2>> {
         match p {
             PlacedParticles::Rz(b) => Some(b),
-            PlacedParticles::ThreeD(_) => None,
+            PlacedParticles::ThreeD(_) | PlacedParticles::Quarter(_) => None,
         }
     }
     /// (v_r, v_z) of a body moving along the axis: (0, v_z) (x = y = 0 is checked).

@@ -62,9 +62,11 @@ pub enum SceneErrorKind {
         /// The first such particle's position (m).
         first: [f64; 3],
     },
-    /// A body of an axisymmetric (RZ) scene is not symmetric about the z axis; what is
-    /// wrong and what is accepted.
-    #[error("not axisymmetric about the z axis, as geometry = \"rz\" needs: {0}")]
+    /// A body of an axisymmetric (RZ) scene, or one placed as rings, is not symmetric
+    /// about the z axis; what is wrong and what is accepted.
+    #[error(
+        "not axisymmetric about the z axis (geometry = \"rz\" and placement kind \"rings\" need it): {0}"
+    )]
     NotAxisymmetric(String),
     /// The solver settings are out of range, or the solver rejected the set-up.
     #[error("{0}")]

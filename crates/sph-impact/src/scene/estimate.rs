@@ -141,7 +141,7 @@ impl Scene {
         } else {
             ASSUMED_EVALUATIONS_PER_CORE_FLUID
         } * match self.geometry {
-            GeometryKind::ThreeD => 1.0,
+            GeometryKind::ThreeD | GeometryKind::ThreeDQuarter => 1.0,
             GeometryKind::Rz => RZ_RATE_FACTOR,
         };
         let threads = threads.max(1);
@@ -177,6 +177,12 @@ impl CheckReport {
             let _ = writeln!(
                 s,
                 "geometry        RZ (axisymmetric): particles are rings, masses the whole rings'"
+            );
+        }
+        if self.geometry == GeometryKind::ThreeDQuarter {
+            let _ = writeln!(
+                s,
+                "geometry        3-D quarter (x > 0, y > 0): particles of the quarter, masses the whole bodies'"
             );
         }
         for b in &self.bodies {

@@ -86,7 +86,8 @@ pub struct Scene {
     /// Free text describing the scene.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub description: Option<String>,
-    /// `"3d"` (default) or `"rz"` (axisymmetric about z).
+    /// `"3d"` (default), `"3d-quarter"` (3-D, a quarter between symmetry planes) or
+    /// `"rz"` (axisymmetric about z).
     #[serde(default)]
     pub geometry: GeometryKind,
     /// Simulated time to run (s), > 0.
@@ -117,10 +118,20 @@ impl Scene {
     pub fn scheme(&self) -> crate::SchemeConfig {
         let mut s = self.solver.scheme();
         s.geometry = match self.geometry {
-            GeometryKind::ThreeD => crate::Geometry::Cartesian,
+            GeometryKind::ThreeD | GeometryKind::ThreeDQuarter => crate::Geometry::Cartesian,
             GeometryKind::Rz => crate::Geometry::Axisymmetric,
         };
         s
+    }
+
+    /// How many copies of the modelled part make the whole bodies: 4 for
+    /// `"3d-quarter"`, 1 otherwise (RZ's 2π per radian is the dimension's,
+    /// `SceneDimension::BODY_FACTOR`).
+    pub fn symmetry_copies(&self) -> f64 {
+        match self.geometry {
+            GeometryKind::ThreeDQuarter => 4.0,
+            GeometryKind::ThreeD | GeometryKind::Rz => 1.0,
+        }
     }
 
     /// The scene as TOML; reading it back gives an equal scene. Fails only for a

@@ -12,7 +12,7 @@ use rayon::prelude::*;
 use sph_core::glam::{DVec2, DVec3};
 use sph_geometry::{
     BodyParticles, FibonacciPlacement, GeometryError, RzLayeredPlacement, Shape, cubic_lattice,
-    rz_lattice,
+    revolve, rz_lattice,
 };
 use std::f64::consts::TAU;
 
@@ -24,13 +24,16 @@ pub enum PlacedParticles {
     /// RZ: positions (r, z) in the half-plane r > 0 (m), ring masses per radian (kg/rad),
     /// spacings (m).
     Rz(BodyParticles<DVec2>),
+    /// 3-D quarter model: the particles with x > 0, y > 0 of a body placed as rings
+    /// (masses in kg; the body is 4 times them).
+    Quarter(BodyParticles<DVec3>),
 }
 
 impl PlacedParticles {
     /// Number of particles.
     pub fn len(&self) -> usize {
         match self {
-            Self::ThreeD(p) => p.len(),
+            Self::ThreeD(p) | Self::Quarter(p) => p.len(),
             Self::Rz(p) => p.len(),
         }
     }
@@ -40,10 +43,11 @@ impl PlacedParticles {
         self.len() == 0
     }
 
-    /// The body's mass (kg): Σ m in 3-D, 2π Σ m in RZ.
+    /// The body's mass (kg): Σ m in 3-D, 2π Σ m in RZ, 4 Σ m for a quarter.
     pub fn body_mass(&self) -> f64 {
         match self {
             Self::ThreeD(p) => p.total_mass(),
+            Self::Quarter(p) => 4.0 * p.total_mass(),
             Self::Rz(p) => TAU * p.total_mass(),
         }
     }
@@ -51,7 +55,7 @@ impl PlacedParticles {
     /// Each particle's spacing (m).
     pub fn spacing(&self) -> &[f64] {
         match self {
-            Self::ThreeD(p) => &p.spacing,
+            Self::ThreeD(p) | Self::Quarter(p) => &p.spacing,
             Self::Rz(p) => &p.spacing,
         }
     }
@@ -59,7 +63,7 @@ impl PlacedParticles {
     /// Finest and coarsest spacing (m).
     pub fn spacing_range(&self) -> (f64, f64) {
         match self {
-            Self::ThreeD(p) => (p.min_spacing(), p.max_spacing()),
+            Self::ThreeD(p) | Self::Quarter(p) => (p.min_spacing(), p.max_spacing()),
             Self::Rz(p) => (p.min_spacing(), p.max_spacing()),
         }
     }
@@ -67,7 +71,7 @@ impl PlacedParticles {
     /// The volume each particle stands for (m³): m/ρ, the ring's 2π m/ρ in RZ.
     pub fn volumes(&self, density: f64) -> Vec<f64> {
         match self {
-            Self::ThreeD(p) => p.masses.iter().map(|m| m / density).collect(),
+            Self::ThreeD(p) | Self::Quarter(p) => p.masses.iter().map(|m| m / density).collect(),
             Self::Rz(p) => p.masses.iter().map(|m| TAU * m / density).collect(),
         }
     }
@@ -75,7 +79,7 @@ impl PlacedParticles {
     /// Particle `i` as a 3-D point: itself, or (r, 0, z) in RZ.
     pub fn point(&self, i: usize) -> DVec3 {
         match self {
-            Self::ThreeD(p) => p.positions[i],
+            Self::ThreeD(p) | Self::Quarter(p) => p.positions[i],
             Self::Rz(p) => DVec3::new(p.positions[i].x, 0.0, p.positions[i].y),
         }
     }
@@ -115,11 +119,52 @@ fn fill(
         (GeometryKind::Rz, PlacementSpec::Lattice { spacing }) => {
             PlacedParticles::Rz(rz_lattice(shape, spacing, rho)?)
         }
-        // The origin is on the axis (`check_axisymmetric`): only its z counts.
-        (GeometryKind::Rz, PlacementSpec::Variable { origin, a_res, q }) => {
-            PlacedParticles::Rz(RzLayeredPlacement::new(origin[2], a_res, q, rho)?.place(shape)?)
+        // The origin is on the axis (`check_revolvable`): only its z counts.
+        (
+            GeometryKind::Rz,
+            PlacementSpec::Variable { origin, a_res, q }
+            | PlacementSpec::Rings { origin, a_res, q },
+        ) => PlacedParticles::Rz(RzLayeredPlacement::new(origin[2], a_res, q, rho)?.place(shape)?),
+        // A multiple of four points per ring: a quarter of every ring lies in x > 0,
+        // y > 0 and none on the planes, so "3d" and "3d-quarter" hold the same particles.
+        (GeometryKind::ThreeD, PlacementSpec::Rings { origin, a_res, q }) => {
+            let rings = RzLayeredPlacement::new(origin[2], a_res, q, rho)?.place(shape)?;
+            PlacedParticles::ThreeD(revolve(&rings, 4)?)
+        }
+        (GeometryKind::ThreeDQuarter, PlacementSpec::Rings { origin, a_res, q }) => {
+            let rings = RzLayeredPlacement::new(origin[2], a_res, q, rho)?.place(shape)?;
+            PlacedParticles::Quarter(quarter(revolve(&rings, 4)?))
+        }
+        // `Scene::check` allows only rings in a quarter model.
+        (
+            GeometryKind::ThreeDQuarter,
+            PlacementSpec::Lattice { .. } | PlacementSpec::Variable { .. },
+        ) => {
+            return Err(GeometryError::EmptyPlacement {
+                body: shape.describe(),
+                reason: "geometry = \"3d-quarter\" needs placement kind \"rings\"".into(),
+            });
         }
     })
+}
+
+/// The particles of `body` with x > 0 and y > 0; the totals (volume, mass errors) stay
+/// the whole body's.
+fn quarter(body: BodyParticles<DVec3>) -> BodyParticles<DVec3> {
+    let (mut positions, mut masses, mut spacing) = (Vec::new(), Vec::new(), Vec::new());
+    for ((x, m), dx) in body.positions.iter().zip(&body.masses).zip(&body.spacing) {
+        if x.x > 0.0 && x.y > 0.0 {
+            positions.push(*x);
+            masses.push(*m);
+            spacing.push(*dx);
+        }
+    }
+    BodyParticles {
+        positions,
+        masses,
+        spacing,
+        ..body
+    }
 }
 
 impl Scene {

@@ -2,13 +2,20 @@
 
 use serde::{Deserialize, Serialize};
 
-/// The run's geometry (serialised as `"3d"` or `"rz"`).
+/// The run's geometry (serialised as `"3d"`, `"3d-quarter"` or `"rz"`).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
 pub enum GeometryKind {
     /// Full 3-D.
     #[default]
     #[serde(rename = "3d")]
     ThreeD,
+    /// 3-D, the quarter x > 0, y > 0 between the reflecting planes x = 0 and y = 0: every
+    /// body symmetric about the z axis, moving along it and placed as `rings` (each ring's
+    /// points a multiple of 4, so the quarter is exact). A quarter of the particles and
+    /// of the cost; every total in the outputs is the whole bodies' (4 × the quarter's;
+    /// the x and y momenta are zero by symmetry).
+    #[serde(rename = "3d-quarter")]
+    ThreeDQuarter,
     /// Axisymmetric about z: every body a sphere or cylinder on the z axis, moving along
     /// it; the run has 2-D particles in the (r, z) half-plane, each a ring.
     #[serde(rename = "rz")]
@@ -69,4 +76,9 @@ pub struct DiagnosticsSettings {
     /// (docs/diagnostics.md §4.3).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub spall_damage: Option<f64>,
+    /// Target material expanded below this fraction of its reference density is loose
+    /// rubble, not crater wall (depth, bowl and removed diameter), in [0, 1); default 0.5
+    /// (the solver's fragmentation threshold), 0 turns it off (docs/diagnostics.md §4.1).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub rubble_density: Option<f64>,
 }

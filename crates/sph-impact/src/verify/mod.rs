@@ -281,6 +281,22 @@ impl Problem {
         }
     }
 
+    /// Runs `taylor` in 3-D with the rod placed as the RZ run's rings revolved about the
+    /// axis (`sph_geometry::revolve`) instead of a cubic lattice: no preferred in-plane
+    /// axes, the exact rod mass, and the same radii and heights as the RZ run. Other
+    /// problems give an error.
+    pub fn run_rings(
+        &self,
+        resolution: Option<usize>,
+        scheme: crate::SchemeConfig,
+    ) -> Result<Outcome, crate::SolverError> {
+        let n = self.resolve(resolution, &scheme)?;
+        match self {
+            Problem::Taylor => taylor::run(n, scheme, taylor::RodPlacement::Rings),
+            _ => Err(no_such_form("only taylor has a 3-D ring-placement form")),
+        }
+    }
+
     /// Runs `sedov-2d` or `sedov-3d` (in RZ when `rz`) with the blast energy put in by
     /// `deposit`; the other problems have no deposit and give an error.
     pub fn run_sedov(
@@ -326,7 +342,7 @@ impl Problem {
             Problem::Contact => contact::run(n, scheme, column::Planar::OneD),
             Problem::Plate => plate::run(n, scheme),
             Problem::Rings => rings::run(n, scheme),
-            Problem::Taylor => taylor::run(n, scheme),
+            Problem::Taylor => taylor::run(n, scheme, taylor::RodPlacement::Lattice),
             Problem::TensileBar => tensile_bar::run(n, scheme),
         }
     }

@@ -17,7 +17,7 @@ use crate::{Boundary, Material, SchemeConfig, Simulation, SolverError};
 use sph_core::glam::{DVec2, DVec3};
 use sph_core::{Dim2, Dim3, Dimension, ParticleInit, Particles};
 use sph_eos::LinearElastic;
-use sph_geometry::{Cylinder, cubic_lattice};
+use sph_geometry::{Cylinder, cubic_lattice, revolve, rz_lattice};
 use sph_kernel::KernelChoice;
 use sph_strength::VonMises;
 
@@ -36,18 +36,38 @@ fn copper() -> Result<(LinearElastic, VonMises), SolverError> {
     elastic_solid(RHO, bulk, shear, 400.0e6, Some(100.0e6))
 }
 
-/// Runs with `n` lattice spacings across the rod's radius.
-pub(crate) fn run(n: usize, scheme: SchemeConfig) -> Result<Outcome, SolverError> {
+/// How the 3-D rod is filled with particles.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum RodPlacement {
+    /// A cubic lattice offset by half a spacing from the axis (the default).
+    Lattice,
+    /// The RZ run's square (r, z) lattice revolved about the axis
+    /// ([`sph_geometry::revolve`]): rings of points one spacing apart, no preferred
+    /// in-plane axes, and the exact mass of the rod.
+    Rings,
+}
+
+/// Runs with `n` spacings across the rod's radius, the rod placed by `placement`.
+pub(crate) fn run(
+    n: usize,
+    scheme: SchemeConfig,
+    placement: RodPlacement,
+) -> Result<Outcome, SolverError> {
     let bad = |e: String| SolverError::Material(e);
     let (eos, strength) = copper()?;
     let dx = RADIUS / n as f64;
     let rod =
         Cylinder::new(DVec3::ZERO, DVec3::Z, RADIUS, LENGTH).map_err(|e| bad(e.to_string()))?;
-    let body = cubic_lattice(&rod, dx, RHO).map_err(|e| bad(e.to_string()))?;
+    let body = match placement {
+        RodPlacement::Lattice => cubic_lattice(&rod, dx, RHO),
+        // A multiple of 4 points per ring: each quadrant holds a quarter of every ring.
+        RodPlacement::Rings => rz_lattice(&rod, dx, RHO).and_then(|rings| revolve(&rings, 4)),
+    }
+    .map_err(|e| bad(e.to_string()))?;
     let mut p = Particles::<Dim3>::new();
     for (x, m) in body.positions.iter().zip(&body.masses) {
-        // The quarter x > 0, y > 0 (the lattice is offset by half a spacing from the
-        // axis, so no particle lies on a symmetry plane).
+        // The quarter x > 0, y > 0 (both placements keep every particle off the
+        // symmetry planes).
         if x.x > 0.0 && x.y > 0.0 {
             p.push(ParticleInit {
                 position: *x,
@@ -87,7 +107,11 @@ pub(crate) fn run(n: usize, scheme: SchemeConfig) -> Result<Outcome, SolverError
     )?;
     let anvil = z_min0 - 0.5 * dx;
     // Quarter model: the full rod's KE0 is four times the quarter's.
-    let run = RodRun::simulate("taylor", n, dx, sim, 4.0, |x| {
+    let name = match placement {
+        RodPlacement::Lattice => "taylor",
+        RodPlacement::Rings => "taylor (3-D, rings)",
+    };
+    let run = RodRun::simulate(name, n, dx, sim, 4.0, |x| {
         [x.truncate().length(), x.z - anvil]
     })?;
     Ok(run.outcome())
