@@ -70,15 +70,26 @@ fn study_target() -> Cylinder {
     Cylinder::new(DVec3::new(0.0, 0.0, -0.1233), DVec3::Z, 0.06165, 0.1233).unwrap()
 }
 
+/// The RZ layers about (0, `origin_z`) in `shape`.
+fn layers(
+    shape: &impl Shape<DVec3>,
+    origin_z: f64,
+    a: f64,
+    q: f64,
+    rho: f64,
+) -> BodyParticles<DVec2> {
+    RzLayeredPlacement::new(origin_z, a, q, rho)
+        .unwrap()
+        .place(shape)
+        .unwrap()
+}
+
 #[test]
 fn masses_add_up_to_the_body() {
     let rho = 2876.0;
     // A sphere about its centre whose radius is a layer boundary: exact.
-    let ball = Sphere::new(DVec3::new(0.0, 0.0, 3.5e-3), 3.0e-3).unwrap();
-    let p = RzLayeredPlacement::new(3.5e-3, 0.5e-3, 1.0, 2785.0)
-        .unwrap()
-        .place(&ball)
-        .unwrap();
+    let projectile = Sphere::new(DVec3::new(0.0, 0.0, 3.5e-3), 3.0e-3).unwrap();
+    let p = layers(&projectile, 3.5e-3, 0.5e-3, 1.0, 2785.0);
     report("projectile sphere, origin at its centre, q = 1", &p);
     assert!(mass_error(&p).abs() < 1e-12);
     assert!(p.raw_mass_error.unwrap().abs() < 1e-12);
@@ -94,11 +105,7 @@ fn masses_add_up_to_the_body() {
     // Layers that overshoot the surface: 2 mm layers about the centre of a 3 mm sphere
     // (the study's projectile at a quarter of its resolution). Each particle carries the
     // inside part of its sector (whole sectors gave the sphere 2.37 times its mass).
-    let ball3 = Sphere::new(DVec3::new(0.0, 0.0, 3.5e-3), 3.0e-3).unwrap();
-    let p = RzLayeredPlacement::new(3.5e-3, 2.0e-3, 1.0, 2785.0)
-        .unwrap()
-        .place(&ball3)
-        .unwrap();
+    let p = layers(&projectile, 3.5e-3, 2.0e-3, 1.0, 2785.0);
     report("projectile sphere, 2 mm layers", &p);
     assert!(mass_error(&p).abs() < 1e-12);
     assert!(p.raw_mass_error.unwrap().abs() < 0.02);

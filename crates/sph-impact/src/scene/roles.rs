@@ -144,30 +144,28 @@ impl Scene {
                 "must be positive",
             ));
         }
-        let spall_damage = match d.spall_damage {
-            None => Some(DiagnosticSetup::DEFAULT_SPALL_DAMAGE),
-            Some(1.0) => None,
-            Some(x) if x > 0.0 && x < 1.0 => Some(x),
-            Some(x) => {
-                return Err(invalid(
-                    "diagnostics.spall_damage",
-                    x,
-                    "must be in (0, 1] (1 turns the spall count off)",
-                ));
-            }
-        };
-        let rubble_density = match d.rubble_density {
-            None => Some(DiagnosticSetup::DEFAULT_RUBBLE_DENSITY),
-            Some(0.0) => None,
-            Some(x) if x > 0.0 && x < 1.0 => Some(x),
-            Some(x) => {
-                return Err(invalid(
-                    "diagnostics.rubble_density",
-                    x,
-                    "must be in [0, 1) (0 turns the rubble cut off)",
-                ));
-            }
-        };
+        // Both are fractions in (0, 1) with one end of the range turning them off.
+        let fraction =
+            |key: &str, value: Option<f64>, default: f64, off: f64, reason: &str| match value {
+                None => Ok(Some(default)),
+                Some(x) if x == off => Ok(None),
+                Some(x) if x > 0.0 && x < 1.0 => Ok(Some(x)),
+                Some(x) => Err(invalid(key, x, reason)),
+            };
+        let spall_damage = fraction(
+            "diagnostics.spall_damage",
+            d.spall_damage,
+            DiagnosticSetup::DEFAULT_SPALL_DAMAGE,
+            1.0,
+            "must be in (0, 1] (1 turns the spall count off)",
+        )?;
+        let rubble_density = fraction(
+            "diagnostics.rubble_density",
+            d.rubble_density,
+            DiagnosticSetup::DEFAULT_RUBBLE_DENSITY,
+            0.0,
+            "must be in [0, 1) (0 turns the rubble cut off)",
+        )?;
         Ok(DiagnosticSetup {
             projectile,
             targets,

@@ -274,11 +274,12 @@ impl Problem {
         resolution: Option<usize>,
         scheme: crate::SchemeConfig,
     ) -> Result<Outcome, crate::SolverError> {
-        let n = self.resolve(resolution, &scheme)?;
-        match self {
-            Problem::NohPlanar => noh::run_planar_column(n, scheme, false),
-            _ => Err(no_such_form("only noh-planar has a plane 2-D column form")),
-        }
+        self.run_only_form(
+            Problem::NohPlanar,
+            "only noh-planar has a plane 2-D column form",
+            (resolution, scheme),
+            |n, scheme| noh::run_planar_column(n, scheme, false),
+        )
     }
 
     /// Runs `taylor` in 3-D with the rod placed as the RZ run's rings revolved about the
@@ -290,11 +291,28 @@ impl Problem {
         resolution: Option<usize>,
         scheme: crate::SchemeConfig,
     ) -> Result<Outcome, crate::SolverError> {
-        let n = self.resolve(resolution, &scheme)?;
-        match self {
-            Problem::Taylor => taylor::run(n, scheme, taylor::RodPlacement::Rings),
-            _ => Err(no_such_form("only taylor has a 3-D ring-placement form")),
+        self.run_only_form(
+            Problem::Taylor,
+            "only taylor has a 3-D ring-placement form",
+            (resolution, scheme),
+            |n, scheme| taylor::run(n, scheme, taylor::RodPlacement::Rings),
+        )
+    }
+
+    /// Runs a form of the problem that only `owner` has: `run` at the resolved
+    /// resolution, or the error `reason` for any other problem.
+    fn run_only_form(
+        &self,
+        owner: Problem,
+        reason: &'static str,
+        (resolution, scheme): (Option<usize>, crate::SchemeConfig),
+        run: impl FnOnce(usize, crate::SchemeConfig) -> Result<Outcome, crate::SolverError>,
+    ) -> Result<Outcome, crate::SolverError> {
+        if *self != owner {
+            return Err(no_such_form(reason));
         }
+        let n = self.resolve(resolution, &scheme)?;
+        run(n, scheme)
     }
 
     /// Runs `sedov-2d` or `sedov-3d` (in RZ when `rz`) with the blast energy put in by
