@@ -283,11 +283,7 @@ impl RzLayeredPlacement {
         // (j, point, inside mass, kept)
         let sectors: Vec<(usize, DVec2, f64, bool)> = (0..n)
             .map(|j| {
-                let theta = (j as f64 + 0.5) * dt;
-                let p = DVec2::new(
-                    s.radius * theta.sin(),
-                    self.origin_z + s.radius * theta.cos(),
-                );
+                let p = self.point(s.radius, (j as f64 + 0.5) * dt);
                 let (a, b) = (j as f64 * dt, (j + 1) as f64 * dt);
                 let kept = p.x > 0.0 && shape.contains(point3(p));
                 let mut inside = self.inside_fraction(s, (a, b), shape);
@@ -315,6 +311,11 @@ impl RzLayeredPlacement {
         out.into_iter().map(|(_, p, m)| (p, m, s.spacing)).collect()
     }
 
+    /// The point (r, z) at distance `radius` from the origin and polar angle `theta` from +z.
+    fn point(&self, radius: f64, theta: f64) -> DVec2 {
+        DVec2::new(radius * theta.sin(), self.origin_z + radius * theta.cos())
+    }
+
     /// The fraction of the ring volume of the sector [inner, outer] × [θ_a, θ_b] of shell
     /// `s` that lies inside `shape`, by the midpoint rule on 8 × 8 sub-cells weighted by
     /// the ring volume element R² sin θ dR dθ. 1 in the interior; at a surface the particle
@@ -334,9 +335,8 @@ impl RzLayeredPlacement {
             for j in 0..SUB {
                 let theta = ta + (j as f64 + 0.5) / SUB as f64 * (tb - ta);
                 let w = radius * radius * theta.sin();
-                let p = DVec2::new(radius * theta.sin(), self.origin_z + radius * theta.cos());
                 all += w;
-                if shape.contains(point3(p)) {
+                if shape.contains(point3(self.point(radius, theta))) {
                     inside += w;
                 }
             }

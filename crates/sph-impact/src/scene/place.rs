@@ -127,13 +127,17 @@ fn fill(
         ) => PlacedParticles::Rz(RzLayeredPlacement::new(origin[2], a_res, q, rho)?.place(shape)?),
         // A multiple of four points per ring: a quarter of every ring lies in x > 0,
         // y > 0 and none on the planes, so "3d" and "3d-quarter" hold the same particles.
-        (GeometryKind::ThreeD, PlacementSpec::Rings { origin, a_res, q }) => {
+        (
+            GeometryKind::ThreeD | GeometryKind::ThreeDQuarter,
+            PlacementSpec::Rings { origin, a_res, q },
+        ) => {
             let rings = RzLayeredPlacement::new(origin[2], a_res, q, rho)?.place(shape)?;
-            PlacedParticles::ThreeD(revolve(&rings, 4)?)
-        }
-        (GeometryKind::ThreeDQuarter, PlacementSpec::Rings { origin, a_res, q }) => {
-            let rings = RzLayeredPlacement::new(origin[2], a_res, q, rho)?.place(shape)?;
-            PlacedParticles::Quarter(quarter(revolve(&rings, 4)?))
+            let body = revolve(&rings, 4)?;
+            if geometry == GeometryKind::ThreeDQuarter {
+                PlacedParticles::Quarter(quarter(body))
+            } else {
+                PlacedParticles::ThreeD(body)
+            }
         }
         // `Scene::check` allows only rings in a quarter model.
         (
