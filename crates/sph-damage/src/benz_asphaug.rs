@@ -29,7 +29,10 @@
 //!   n_act cracks of radius a each damage n_act (a/R_s)^p, so D^(1/p) = n_act^(1/p) a/R_s
 //!   grows at n_act^(1/p) c_g/R_s. With n_act = k V_i ε^m and ε = ε̇t this gives
 //!   D ∝ k V_i c_g³ ε̇^m t^(m+3)/R_s³ in 3-D: the continuum Grady–Kipp law (Grady & Kipp
-//!   1980), hence σ_max ∝ ε̇^(3/(m+3)) while the cap n_act/n_tot is not reached.
+//!   1980), hence σ_max ∝ ε̇^(3/(m+3)) while the cap n_act/n_tot is not reached. Past the
+//!   strongest seeded flaw every seeded flaw is active and the count stops growing, unless
+//!   the population is continued ([`FlawTail::Continuum`], [`crate::flaw_tail`]): then
+//!   the law follows Grady–Kipp at any rate past the seeded flaws.
 //!
 //! In every form the cap D ≤ n_act/n_tot holds (the solver applies it through
 //! [`crate::apply_bounds`]); the cap never falls below the current D, so damage does not
@@ -37,6 +40,7 @@
 //! scaling σ_max ∝ ε̇^(3/(m+3)) best is measured in `tests/strain_rate.rs`.
 
 use crate::error::DamageError;
+use crate::flaw_tail::{FlawTail, Tail};
 use crate::model::{DamageBounds, DamageEval, DamageInput, DamageModel, DamageVariable};
 use crate::params::WeibullParams;
 use crate::weibull::FlawSet;
@@ -71,6 +75,7 @@ pub struct BenzAsphaugParams {
     crack_speed_fraction: f64,
     growth: GrowthLaw,
     variable: DamageVariable,
+    tail: FlawTail,
 }
 
 #[derive(Deserialize)]
@@ -83,6 +88,8 @@ struct BenzAsphaugParamsUnchecked {
     growth: GrowthLaw,
     #[serde(default)]
     variable: DamageVariable,
+    #[serde(default)]
+    tail: FlawTail,
 }
 
 fn default_crack_speed_fraction() -> f64 {
@@ -94,13 +101,17 @@ impl TryFrom<BenzAsphaugParamsUnchecked> for BenzAsphaugParams {
     fn try_from(raw: BenzAsphaugParamsUnchecked) -> Result<Self, DamageError> {
         BenzAsphaugParams::new(raw.weibull, raw.seed)
             .with_crack_speed_fraction(raw.crack_speed_fraction)
-            .map(|p| p.with_growth(raw.growth).with_variable(raw.variable))
+            .map(|p| {
+                p.with_growth(raw.growth)
+                    .with_variable(raw.variable)
+                    .with_tail(raw.tail)
+            })
     }
 }
 
 impl BenzAsphaugParams {
     /// Defaults: c_g = 0.4 c_L, [`GrowthLaw::PerActivatedFlaw`], the solver integrates
-    /// D^(1/3) (3-D cracks).
+    /// D^(1/3) (3-D cracks), only the seeded flaws exist ([`FlawTail::Seeded`]).
     pub fn new(weibull: WeibullParams, seed: u64) -> Self {
         BenzAsphaugParams {
             weibull,
@@ -108,6 +119,7 @@ impl BenzAsphaugParams {
             crack_speed_fraction: CRACK_SPEED_FRACTION_BA94,
             growth: GrowthLaw::default(),
             variable: DamageVariable::CubeRoot,
+            tail: FlawTail::Seeded,
         }
     }
 
@@ -137,6 +149,12 @@ impl BenzAsphaugParams {
         self
     }
 
+    /// Sets what lies beyond the strongest seeded flaw ([`crate::flaw_tail`]).
+    pub fn with_tail(mut self, tail: FlawTail) -> Self {
+        self.tail = tail;
+        self
+    }
+
     /// Weibull parameters.
     pub fn weibull(&self) -> WeibullParams {
         self.weibull
@@ -157,6 +175,10 @@ impl BenzAsphaugParams {
     pub fn variable(&self) -> DamageVariable {
         self.variable
     }
+    /// Flaws beyond the strongest seeded one.
+    pub fn tail(&self) -> FlawTail {
+        self.tail
+    }
 }
 
 /// The Benz–Asphaug model: parameters plus the seeded flaws of one body.
@@ -165,6 +187,10 @@ impl BenzAsphaugParams {
 pub struct BenzAsphaug {
     params: BenzAsphaugParams,
     flaws: FlawSet,
+    /// The continued population past the strongest seeded flaw (derived from the flaws;
+    /// `None` with [`FlawTail::Seeded`]).
+    #[serde(skip)]
+    tail: Option<Tail>,
 }
 
 #[derive(Deserialize)]
@@ -189,7 +215,7 @@ impl BenzAsphaug {
     ) -> Result<Self, DamageError> {
         let flaws =
             FlawSet::seed_benz_asphaug(params.weibull, n_particles, total_volume, params.seed)?;
-        Ok(BenzAsphaug { params, flaws })
+        Ok(BenzAsphaug::assemble(params, flaws))
     }
 
     /// Seeds the flaws of a body with V = Σ V_i from the particle volumes (m³).
@@ -198,7 +224,7 @@ impl BenzAsphaug {
         volumes: &[f64],
     ) -> Result<Self, DamageError> {
         let flaws = FlawSet::seed_benz_asphaug_volumes(params.weibull, volumes, params.seed)?;
-        Ok(BenzAsphaug { params, flaws })
+        Ok(BenzAsphaug::assemble(params, flaws))
     }
 
     /// Re-assembles a model from a stored flaw set (checkpoint restart); the flaws must
@@ -209,7 +235,24 @@ impl BenzAsphaug {
                 reason: "flaws were seeded with other Weibull parameters or another seed",
             });
         }
-        Ok(BenzAsphaug { params, flaws })
+        Ok(BenzAsphaug::assemble(params, flaws))
+    }
+
+    /// The model of checked parameters and flaws, with the tail derived from the flaws.
+    fn assemble(params: BenzAsphaugParams, flaws: FlawSet) -> BenzAsphaug {
+        let tail = (params.tail == FlawTail::Continuum).then(|| {
+            Tail::new(
+                flaws.strongest_threshold(),
+                params.weibull.k() * flaws.total_volume(),
+                flaws.n_particles(),
+                params.weibull.m(),
+            )
+        });
+        BenzAsphaug {
+            params,
+            flaws,
+            tail,
+        }
     }
 
     /// The parameters.
@@ -262,32 +305,39 @@ impl DamageModel for BenzAsphaug {
                 active_flaws: 0,
             };
         }
-        // Flaw j is active when ε ≥ ε_j.
-        let n_act = self.flaws.activated(particle, strain).unwrap_or(0);
+        // Flaw j is active when ε ≥ ε_j; past the strongest seeded flaw the continued
+        // tail, if any, adds the population's mean share (crate::flaw_tail).
+        let seeded = self.flaws.activated(particle, strain).unwrap_or(0);
+        let n_act = match self.tail {
+            Some(tail) if strain > tail.top_strain => tail.count(n_tot, strain),
+            _ => seeded as f64,
+        };
         let growth =
             self.params.crack_speed_fraction * input.longitudinal_wave_speed / input.particle_size;
         let factor = match self.params.growth {
-            GrowthLaw::PerActivatedFlaw => n_act as f64,
-            GrowthLaw::ActivatedFraction => n_act as f64 / n_tot as f64,
+            GrowthLaw::PerActivatedFlaw => n_act,
+            GrowthLaw::ActivatedFraction => (n_act / n_tot as f64).min(1.0),
             GrowthLaw::SingleCrack => {
-                if n_act > 0 {
+                if n_act > 0.0 {
                     1.0
                 } else {
                     0.0
                 }
             }
             GrowthLaw::CrackVolume => match self.params.variable {
-                DamageVariable::Damage => n_act as f64,
-                DamageVariable::SquareRoot => (n_act as f64).sqrt(),
-                DamageVariable::CubeRoot => (n_act as f64).cbrt(),
+                DamageVariable::Damage => n_act,
+                DamageVariable::SquareRoot => n_act.sqrt(),
+                DamageVariable::CubeRoot => n_act.cbrt(),
             },
         };
-        let rate = if n_act == 0 { 0.0 } else { factor * growth };
-        // Cap D ≤ n_act/n_tot, never below the current D (no healing).
-        let cap = (n_act as f64 / n_tot as f64).max(d);
+        let rate = if n_act > 0.0 { factor * growth } else { 0.0 };
+        // Cap D ≤ n_act/n_tot (at most 1: the tail activates past n_tot), never below the
+        // current D (no healing).
+        let cap = (n_act / n_tot as f64).min(1.0).max(d);
         DamageEval {
             rate,
             bounds: DamageBounds { min: 0.0, max: cap },
+            // Whole flaws, saturating for an enormous tail count.
             active_flaws: n_act as u32,
         }
     }

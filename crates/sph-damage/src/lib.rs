@@ -3,7 +3,8 @@
 //! Scalar damage D ∈ [0, 1] of brittle solids (paper §3.3) behind the [`DamageModel`]
 //! trait: the maximum-tensile-stress model ([`MaxTensileStress`]), Benz–Asphaug
 //! Weibull flaws with crack growth ([`BenzAsphaug`], flaws in a [`FlawSet`] seeded
-//! reproducibly with rand_pcg), and [`NoDamage`]. Damage weakens tension and the
+//! reproducibly with rand_pcg, optionally continued past the strongest seeded flaw,
+//! [`FlawTail`]), and [`NoDamage`]. Damage weakens tension and the
 //! deviatoric stress elsewhere (paper §2, sph-strength); this crate only evolves D.
 //!
 //! All quantities are f64 in SI units, stress and strain tension-positive.
@@ -54,6 +55,7 @@ pub mod benz_asphaug;
 pub mod choice;
 pub mod elastic;
 pub mod error;
+pub mod flaw_tail;
 pub mod model;
 pub mod none;
 pub mod params;
@@ -64,6 +66,7 @@ pub use benz_asphaug::{BenzAsphaug, BenzAsphaugParams, CRACK_SPEED_FRACTION_BA94
 pub use choice::BuiltinDamage;
 pub use elastic::{longitudinal_wave_speed, poisson_ratio, youngs_modulus};
 pub use error::DamageError;
+pub use flaw_tail::FlawTail;
 pub use model::{
     BoundAction, Bounded, DamageBounds, DamageEval, DamageInput, DamageModel, DamageVariable,
     apply_bounds, max_principal_stress,

@@ -318,6 +318,13 @@ impl FlawSet {
         self.ranks(i).map(<[u32]>::len)
     }
 
+    /// The threshold of the strongest flaw of the set (the largest stored rank; ε_J for
+    /// J = [`Self::total_flaws`] when seeded by [`Self::seed_benz_asphaug`]).
+    pub fn strongest_threshold(&self) -> f64 {
+        let top = self.ranks.iter().copied().max().unwrap_or(1);
+        self.rank_threshold(top)
+    }
+
     /// Weakest flaw of particle `i`: the strain at which it starts to crack.
     #[inline]
     pub fn min_threshold(&self, i: usize) -> Option<f64> {

@@ -5,8 +5,8 @@ use proptest::prelude::*;
 use sph_core::glam::{DMat2, DMat3};
 use sph_damage::{
     BenzAsphaug, BenzAsphaugParams, BoundAction, BuiltinDamage, DamageBounds, DamageError,
-    DamageInput, DamageModel, DamageVariable, FlawSet, GrowthLaw, MaxTensileStress, NoDamage,
-    TensileFailure, WeibullParams, apply_bounds, max_principal_stress, youngs_modulus,
+    DamageInput, DamageModel, DamageVariable, FlawSet, FlawTail, GrowthLaw, MaxTensileStress,
+    NoDamage, TensileFailure, WeibullParams, apply_bounds, max_principal_stress, youngs_modulus,
 };
 
 const E: f64 = 53.062_354_085_603_11e9; // 9·26.7·22.7/102.8 GPa
@@ -87,6 +87,49 @@ fn hand_computed_rates_of_the_three_growth_laws() {
     assert!((ev.rate / GROWTH - 1.0).abs() < 1e-14);
     assert_eq!(ev.bounds.max, 1.0);
     assert!((m.damage_rate(1, &inp) / (3.0 * 0.25 * GROWTH) - 1.0).abs() < 1e-14);
+}
+
+/// The continued tail (sph_damage::flaw_tail) past the strongest seeded flaw, ε_top =
+/// 3e-4 in `small_flaws`: below it nothing changes; above it a particle's count goes on
+/// as k (V/N) (ε^m − ε_top^m) and the cap is 1.
+#[test]
+fn the_continued_tail_adds_the_population_past_the_strongest_seeded_flaw() {
+    let model = |tail| {
+        let params = BenzAsphaugParams::new(WeibullParams::BASALT_BA99, 0)
+            .with_growth(GrowthLaw::CrackVolume)
+            .with_tail(tail);
+        BenzAsphaug::from_flaws(params, small_flaws(0)).unwrap()
+    };
+    let (seeded, tail) = (model(FlawTail::Seeded), model(FlawTail::Continuum));
+    assert_eq!(tail.params().tail(), FlawTail::Continuum);
+    assert!((tail.flaws().strongest_threshold() / 3e-4 - 1.0).abs() < 1e-14);
+    // Below ε_top: identical evaluations.
+    for (particle, strain) in [(0, 2.5e-4), (1, 6e-5), (0, 2.9e-4)] {
+        let inp = input(strain, 0.0);
+        assert_eq!(
+            tail.evaluate(particle, &inp),
+            seeded.evaluate(particle, &inp)
+        );
+    }
+    // At 2 ε_top, particle 1 (one seeded flaw): kV/N = 2⁹·10³⁶/2 and ε_top^9 = 6⁹/kV, so
+    // the tail adds (6⁹/2)(2⁹ − 1) flaws; crack volumes grow at n^(1/3) c_g/R_s.
+    let inp = input(6e-4, 0.0);
+    let count = 1.0 + 6f64.powi(9) / 2.0 * 511.0;
+    let ev = tail.evaluate(1, &inp);
+    assert!(
+        (ev.rate / (count.cbrt() * GROWTH) - 1.0).abs() < 1e-12,
+        "{}",
+        ev.rate
+    );
+    assert_eq!(ev.bounds.max, 1.0);
+    assert!(
+        (f64::from(ev.active_flaws) - count).abs() <= 1.0,
+        "{}",
+        ev.active_flaws
+    );
+    let ev = seeded.evaluate(1, &inp);
+    assert!((ev.rate / GROWTH - 1.0).abs() < 1e-14);
+    assert_eq!(ev.active_flaws, 1);
 }
 
 #[test]

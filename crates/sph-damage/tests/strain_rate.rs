@@ -9,7 +9,7 @@
 //! midpoint (RK2) loop on s = D^(1/3) with the model's bounds, as a solver would do it.
 
 use sph_damage::{
-    BenzAsphaug, BenzAsphaugParams, DamageInput, DamageModel, GrowthLaw, WeibullParams,
+    BenzAsphaug, BenzAsphaugParams, DamageInput, DamageModel, FlawTail, GrowthLaw, WeibullParams,
     apply_bounds, longitudinal_wave_speed, youngs_modulus,
 };
 use std::f64::consts::PI;
@@ -33,6 +33,15 @@ fn log_slope(x: &[f64], y: &[f64]) -> f64 {
     let sxy: f64 = lx.iter().zip(&ly).map(|(a, b)| (a - mx) * (b - my)).sum();
     let sxx: f64 = lx.iter().map(|a| (a - mx) * (a - mx)).sum();
     sxy / sxx
+}
+
+/// The slopes of log σ_max per decade of ε̇ between neighbouring rates, for printing.
+fn local_slopes(peaks: &[f64]) -> String {
+    let local: Vec<String> = peaks
+        .windows(2)
+        .map(|p| format!("{:.3}", (p[1] / p[0]).log10()))
+        .collect();
+    local.join(", ")
 }
 
 /// Peak of σ(t) = E ε̇ t (1 − D(t)) for the continuum Grady–Kipp damage
@@ -144,17 +153,30 @@ fn benz_asphaug_peak(model: &BenzAsphaug, rate: f64, e: f64, cl: f64, rs: f64) -
 /// Runs the five strain rates for one growth law and returns the peaks and the fitted
 /// slope.
 fn sweep(law: GrowthLaw, n: usize, v_i: f64, rs: f64) -> (Vec<f64>, Vec<f64>, f64) {
+    sweep_rates(&RATES, (law, FlawTail::Seeded), n, v_i, rs)
+}
+
+/// As [`sweep`] at the given rates, with the given growth law and flaw tail.
+fn sweep_rates(
+    rates: &[f64],
+    (law, tail): (GrowthLaw, FlawTail),
+    n: usize,
+    v_i: f64,
+    rs: f64,
+) -> (Vec<f64>, Vec<f64>, f64) {
     let (e, cl) = basalt();
-    let params = BenzAsphaugParams::new(WeibullParams::BASALT_BA99, 2024).with_growth(law);
+    let params = BenzAsphaugParams::new(WeibullParams::BASALT_BA99, 2024)
+        .with_growth(law)
+        .with_tail(tail);
     let model = BenzAsphaug::seed(params, n, n as f64 * v_i).unwrap();
     let mut peaks = Vec::new();
     let mut strains = Vec::new();
-    for &r in &RATES {
+    for &r in rates {
         let (s, eps) = benz_asphaug_peak(&model, r, e, cl, rs);
         peaks.push(s);
         strains.push(eps);
     }
-    let slope = log_slope(&RATES, &peaks);
+    let slope = log_slope(rates, &peaks);
     let total = model.flaws().total_flaws() as u64;
     println!(
         "{law:?}: {total} flaws, strongest ε_max = {:.3e}",
@@ -196,15 +218,11 @@ fn benz_asphaug_peak_stress_against_strain_rate() {
             .zip(&strains)
             .map(|(p, s)| format!("{:.1} MPa (ε {:.2e})", p / 1e6, s))
             .collect();
-        let local: Vec<String> = peaks
-            .windows(2)
-            .map(|p| format!("{:.3}", (p[1] / p[0]).log10()))
-            .collect();
         println!("{law:?}: σ_max at ε̇ = 1e2…1e6: {}", row.join(", "));
         println!(
             "{law:?}: fitted slope {slope:.4} vs 3/(m+3) = 0.25 ({:+.1} %); local slopes per decade [{}]",
             100.0 * (slope / 0.25 - 1.0),
-            local.join(", ")
+            local_slopes(&peaks)
         );
         // Rate hardening: every faster loading has a higher peak.
         assert!(peaks.windows(2).all(|p| p[1] > p[0]), "{law:?}: {peaks:?}");
@@ -212,6 +230,73 @@ fn benz_asphaug_peak_stress_against_strain_rate() {
         assert!(
             (slope - pinned).abs() < 2e-3,
             "{law:?}: slope {slope}, pinned {pinned}"
+        );
+    }
+}
+
+/// With the Weibull population continued past the strongest seeded flaw
+/// (`FlawTail::Continuum`) and crack volumes that add up (`GrowthLaw::CrackVolume`), the
+/// peak stress follows the Grady–Kipp ε̇^(3/(m+3)) wherever the strain at the peak is past
+/// the seeded flaws; below, the seeded flaws set it as before.
+#[test]
+fn continued_flaw_tail_gives_the_grady_kipp_exponent() {
+    let n = 1000;
+    let v_i = 0.5e-3f64.powi(3);
+    let rs = (3.0 * v_i / (4.0 * PI)).cbrt();
+    let rates = [1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8];
+    let (e, cl) = basalt();
+    let w = WeibullParams::BASALT_BA99;
+    let top = BenzAsphaug::seed(BenzAsphaugParams::new(w, 2024), n, n as f64 * v_i)
+        .unwrap()
+        .flaws()
+        .strongest_threshold();
+    for law in [GrowthLaw::CrackVolume, GrowthLaw::PerActivatedFlaw] {
+        let (peaks, strains, slope) = sweep_rates(&rates, (law, FlawTail::Continuum), n, v_i, rs);
+        let gk: Vec<f64> = rates
+            .iter()
+            .map(|&r| grady_kipp_peak(w, e, 0.4 * cl, r).0)
+            .collect();
+        let row: Vec<String> = peaks
+            .iter()
+            .zip(&strains)
+            .zip(&gk)
+            .map(|((p, s), g)| format!("{:.1} MPa (ε {:.2e}; GK {:.1})", p / 1e6, s, g / 1e6))
+            .collect();
+        println!("{law:?} + tail: σ_max at ε̇ = 1e2…1e8: {}", row.join(", "));
+        println!(
+            "{law:?} + tail: fitted slope 1e2…1e8 {slope:.4}; local slopes per decade [{}]",
+            local_slopes(&peaks)
+        );
+        // Past the seeded flaws (ε at the peak ≥ 1.5 ε_top: from 1e5 s⁻¹ with crack
+        // volumes, 1e7 s⁻¹ with crack radii) the continued population is k ε^m per unit
+        // volume, as in the continuum law.
+        let tail_rates: Vec<usize> = (0..rates.len())
+            .filter(|&i| strains[i] > 1.5 * top)
+            .collect();
+        let needed = if law == GrowthLaw::CrackVolume { 4 } else { 2 };
+        assert!(tail_rates.len() >= needed, "{law:?}: {tail_rates:?}");
+        for &i in &tail_rates {
+            let ratio = peaks[i] / gk[i];
+            match law {
+                // d(D^(1/3))/dt = n^(1/3) c_g/R_s with n = k V_i ε^m, ε = ε̇t, integrates to
+                // D = (4π/3) c_g³ k ε̇^m t^(m+3) · 27/(m+3)³: Grady–Kipp's t^(m+3) with the
+                // prefactor 27(m+1)(m+2)/(6(m+3)²) = 3.4375 times larger for m = 9, so the
+                // peak is 3.4375^(−1/(m+3)) = 0.9022 of Grady–Kipp's at every rate.
+                GrowthLaw::CrackVolume => {
+                    assert!((ratio / 0.9022 - 1.0).abs() < 0.01, "{}: {ratio}", rates[i])
+                }
+                // Crack radii that add up: D^(1/3) ∝ ε̇^m t^(m+1), σ_max ∝ ε̇^(1/(m+1)).
+                _ => assert!(ratio < 0.75, "{}: {ratio}", rates[i]),
+            }
+        }
+        let local_last = (peaks[rates.len() - 1] / peaks[rates.len() - 2]).log10();
+        let expected = match law {
+            GrowthLaw::CrackVolume => 0.25,
+            _ => 0.1,
+        };
+        assert!(
+            (local_last - expected).abs() < 2e-3,
+            "{law:?}: {local_last}"
         );
     }
 }

@@ -2,7 +2,7 @@
 //! constants, damage seeding. `cargo test -p sph-impact --test materials -- --nocapture`
 //! prints the error messages and the library table.
 
-use sph_damage::{BuiltinDamage, DamageError, GrowthLaw, TensileFailure};
+use sph_damage::{BuiltinDamage, DamageError, FlawTail, GrowthLaw, TensileFailure};
 use sph_eos::{EosPoint, EquationOfState, IdealGas, Tillotson, TillotsonParams};
 use sph_impact::materials::{
     BUILTIN_NAMES, DamageSpec, EosChoice, MaterialError, MaterialSpec, PresetKind, StrengthChoice,
@@ -43,6 +43,7 @@ k = 2.7e41
 m = 10
 crack_speed_fraction = 0.4
 growth = "per-activated-flaw"
+tail = "seeded"
 
 [thermal]
 preset = "basalt"
@@ -191,6 +192,33 @@ fn non_default_options_round_trip() {
         MaterialSpec::from_toml_str(&text, "odd.toml").unwrap(),
         m,
         "{text}"
+    );
+
+    // The Grady–Kipp form of Benz–Asphaug damage (docs/verification.md, tensile bar).
+    let text = r#"
+name = "gk-basalt"
+base = "basalt-study"
+[damage]
+growth = "crack-volume"
+tail = "continuum"
+"#;
+    let gk = MaterialSpec::from_toml_str(text, "gk.toml").unwrap();
+    let DamageSpec::BenzAsphaug { growth, tail, .. } = gk.damage else {
+        panic!("{:?}", gk.damage)
+    };
+    assert_eq!(
+        (growth, tail),
+        (GrowthLaw::CrackVolume, FlawTail::Continuum)
+    );
+    let BuiltinDamage::BenzAsphaug(ba) = gk.damage.build(&[1e-9; 10], 1).unwrap() else {
+        panic!("not Benz–Asphaug")
+    };
+    assert_eq!(ba.params().tail(), FlawTail::Continuum);
+    let written = gk.to_toml().unwrap();
+    assert!(written.contains("tail = \"continuum\""), "{written}");
+    assert_eq!(
+        MaterialSpec::from_toml_str(&written, "gk.toml").unwrap(),
+        gk
     );
 
     let gas = MaterialSpec::new("gas", 1.0, IdealGas::with_gamma(1.4).unwrap());
@@ -394,6 +422,9 @@ fn more_bad_input() {
     let e = error_of(&format!("{base}growth = \"fast\"\n"));
     assert!(e.to_string().contains("per-activated-flaw"));
     assert_names(&e, "damage.growth", 4);
+    let e = error_of(&format!("{base}tail = \"long\"\n"));
+    assert!(e.to_string().contains("continuum"), "{e}");
+    assert_names(&e, "damage.tail", 4);
     // Temperature-dependent strength without thermal data.
     let e = error_of(
         "name = \"x\"\ndensity = 2785\nshear_modulus = 26.5e9\n[eos]\npreset = \"aluminium-study\"\n[strength]\npreset = \"aluminium-2024-jc\"\n",

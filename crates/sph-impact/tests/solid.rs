@@ -275,15 +275,26 @@ fn damage_without_strength_is_an_error_naming_the_material() {
 // `cargo test --release -p sph-impact --test solid -- --ignored --nocapture`.
 
 #[test]
-#[ignore = "long: ~30 s in release"]
+#[ignore = "long: ~2 min in release"]
 fn tensile_bar_peak_stress_grows_with_strain_rate_from_the_static_strength() {
     let out = sph_impact::verify::Problem::TensileBar.run(None).unwrap();
-    let e_eps1 = out.get("static_strength_e_eps1").unwrap();
-    let rates = [2, 3, 4, 5, 6].map(|k| out.get(&format!("peak_stress_rate_1e{k}")).unwrap());
-    println!("E ε_1 = {e_eps1:e}; peaks {rates:?}");
+    let get = |k: &str| out.get(k).unwrap();
+    let e_eps1 = get("static_strength_e_eps1");
+    let rates = [2, 3, 4, 5, 6].map(|k| get(&format!("peak_stress_rate_1e{k}")));
+    let gk = [2, 3, 4, 5, 6, 7, 8].map(|k| get(&format!("gk_peak_stress_rate_1e{k}")));
+    println!("E ε_1 = {e_eps1:e}; peaks {rates:?}; Grady–Kipp form {gk:?}");
     // Failure is never below the first flaw's strength, and faster loading fails later.
-    assert!(rates[0] >= e_eps1);
-    assert!(rates.windows(2).all(|w| w[1] > w[0]));
+    for peaks in [&rates[..], &gk[..]] {
+        assert!(peaks[0] >= e_eps1);
+        assert!(peaks.windows(2).all(|w| w[1] > w[0]));
+    }
+    // The Grady–Kipp form (measured at the study's 0.5 mm, N = 100: 1.223 E ε_1 at
+    // 1e2 s⁻¹, exponent 0.2452 over 1e4…1e8 s⁻¹): close to E ε_1 when slow, and the
+    // issue's 15 % on 3/(m+3) where the peak strain is past the seeded flaws.
+    assert!(get("gk_failure_stress_slowest_over_e_eps1") < 1.3);
+    assert!(get("gk_window_peak_over_top_strain_min") > 1.0);
+    let error = get("gk_rate_exponent_error_relative");
+    assert!(error.abs() < 0.15, "exponent error {error}");
 }
 
 #[test]

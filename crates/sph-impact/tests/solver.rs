@@ -606,3 +606,30 @@ fn rz_planar_noh_matches_the_plane_column() {
     println!("L1(ρ): RZ {a:.4}, plane column {b:.4}");
     assert!((a / b - 1.0).abs() < 0.1, "RZ {a} against plane {b}");
 }
+
+/// Asking for a form a problem does not have (RZ, plane column, rings, an energy
+/// deposit) names the problem and the forms that exist, before anything is placed.
+#[test]
+fn a_missing_verify_form_names_the_problem() {
+    let scheme = || Problem::Sod.default_scheme();
+    let errors = [
+        Problem::Sod.run_rz(None, scheme()).unwrap_err(),
+        Problem::Sod.run_plane_column(None, scheme()).unwrap_err(),
+        Problem::Sod.run_rings(None, scheme()).unwrap_err(),
+        Problem::Sod
+            .run_sedov(None, scheme(), Default::default(), false)
+            .unwrap_err(),
+    ];
+    for e in errors {
+        let text = e.to_string();
+        assert!(
+            matches!(
+                e,
+                sph_impact::SolverError::NoSuchForm { problem: "sod", .. }
+            ),
+            "{text}"
+        );
+        assert!(text.starts_with("verify sod: "), "{text}");
+        assert!(!text.contains("= 0"), "{text}");
+    }
+}

@@ -7,10 +7,10 @@ use crate::materials::damage_spec::DamageSpec;
 use crate::materials::eos_choice::EosChoice;
 use crate::materials::error::{Location, MaterialError};
 use crate::materials::sections::{
-    GROWTH_LAWS, LUNDBORG_TENSIONS, Section, TENSILE_FAILURES, Value,
+    FLAW_TAILS, GROWTH_LAWS, LUNDBORG_TENSIONS, Section, TENSILE_FAILURES, Value,
 };
 use crate::materials::strength_choice::StrengthChoice;
-use sph_damage::{CRACK_SPEED_FRACTION_BA94, DamageError, GrowthLaw, TensileFailure};
+use sph_damage::{CRACK_SPEED_FRACTION_BA94, DamageError, FlawTail, GrowthLaw, TensileFailure};
 use sph_eos::{
     EosError, IdealGas, IdealGasParams, LinearElastic, LinearElasticParams, MieGruneisen,
     MieGruneisenParams, Murnaghan, MurnaghanParams, ThermalModel, ThermalParams, Tillotson,
@@ -112,7 +112,7 @@ pub(crate) const DAMAGE_MODELS: [(&str, &[&str]); 3] = [
     ),
     (
         "benz-asphaug",
-        &["k", "m", "crack_speed_fraction", "growth"],
+        &["k", "m", "crack_speed_fraction", "growth", "tail"],
     ),
 ];
 
@@ -569,6 +569,9 @@ pub(crate) fn build_damage(sec: &Section, cx: &Cx) -> Result<DamageSpec, Materia
             growth: cx
                 .option(sec, "growth", &GROWTH_LAWS)?
                 .unwrap_or(GrowthLaw::default()),
+            tail: cx
+                .option(sec, "tail", &FLAW_TAILS)?
+                .unwrap_or(FlawTail::default()),
         },
     };
     spec.validate().map_err(|e| cx.damage_error(sec, e))?;

@@ -5,7 +5,7 @@
 
 use sph_damage::{
     BenzAsphaug, BenzAsphaugParams, BuiltinDamage, CRACK_SPEED_FRACTION_BA94, DamageError,
-    DamageVariable, GrowthLaw, MaxTensileStress, NoDamage, TensileFailure, WeibullParams,
+    DamageVariable, FlawTail, GrowthLaw, MaxTensileStress, NoDamage, TensileFailure, WeibullParams,
 };
 
 /// The damage model of a material (paper §3.3).
@@ -34,6 +34,8 @@ pub enum DamageSpec {
         crack_speed_fraction: f64,
         /// How the growth rate depends on the number of active flaws.
         growth: GrowthLaw,
+        /// Flaws beyond the strongest seeded one (sph_damage::flaw_tail).
+        tail: FlawTail,
     },
 }
 
@@ -47,14 +49,16 @@ impl DamageSpec {
         }
     }
 
-    /// Benz–Asphaug with Weibull k (m⁻³) and m, crack speed 0.4 c_L and the default growth
-    /// law ([`GrowthLaw::PerActivatedFlaw`]).
+    /// Benz–Asphaug with Weibull k (m⁻³) and m, crack speed 0.4 c_L, the default growth
+    /// law ([`GrowthLaw::PerActivatedFlaw`]) and only the seeded flaws
+    /// ([`FlawTail::Seeded`]).
     pub fn benz_asphaug(k: f64, m: f64) -> Self {
         Self::BenzAsphaug {
             k,
             m,
             crack_speed_fraction: CRACK_SPEED_FRACTION_BA94,
             growth: GrowthLaw::default(),
+            tail: FlawTail::default(),
         }
     }
 
@@ -144,11 +148,13 @@ impl DamageSpec {
                 m,
                 crack_speed_fraction,
                 growth,
+                tail,
             } => {
                 let params = BenzAsphaugParams::new(WeibullParams::new(k, m)?, seed)
                     .with_crack_speed_fraction(crack_speed_fraction)?
                     .with_growth(growth)
-                    .with_variable(variable);
+                    .with_variable(variable)
+                    .with_tail(tail);
                 Ok(BuiltinDamage::BenzAsphaug(BenzAsphaug::seed_with_volumes(
                     params,
                     particle_volumes,

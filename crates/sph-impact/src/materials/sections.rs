@@ -5,7 +5,7 @@
 use crate::materials::damage_spec::DamageSpec;
 use crate::materials::eos_choice::EosChoice;
 use crate::materials::strength_choice::StrengthChoice;
-use sph_damage::{GrowthLaw, TensileFailure};
+use sph_damage::{FlawTail, GrowthLaw, TensileFailure};
 use sph_eos::{DEFAULT_SOUND_SPEED_FLOOR_FRACTION, ThermalModel};
 use sph_strength::{BuiltinStrength, LundborgTension};
 use std::ops::Range;
@@ -86,6 +86,12 @@ pub(crate) const GROWTH_LAWS: [(&str, GrowthLaw); 4] = [
     ("activated-fraction", GrowthLaw::ActivatedFraction),
     ("single-crack", GrowthLaw::SingleCrack),
     ("crack-volume", GrowthLaw::CrackVolume),
+];
+
+/// Names of [`FlawTail`] in material files.
+pub(crate) const FLAW_TAILS: [(&str, FlawTail); 2] = [
+    ("seeded", FlawTail::Seeded),
+    ("continuum", FlawTail::Continuum),
 ];
 
 /// Names of [`LundborgTension`] in material files.
@@ -252,11 +258,13 @@ pub(crate) fn damage_section(damage: &DamageSpec) -> Section {
             m,
             crack_speed_fraction,
             growth,
+            tail,
         } => Section::new(Some("benz-asphaug"))
             .num("k", k)
             .num("m", m)
             .num("crack_speed_fraction", crack_speed_fraction)
-            .name("growth", name_of(&GROWTH_LAWS, growth)),
+            .name("growth", name_of(&GROWTH_LAWS, growth))
+            .name("tail", name_of(&FLAW_TAILS, tail)),
     }
 }
 

@@ -140,6 +140,7 @@ section_table!(
         k => "k",
         m => "m",
         growth => "growth",
+        tail => "tail",
     }
 );
 

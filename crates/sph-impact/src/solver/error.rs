@@ -71,4 +71,13 @@ pub enum SolverError {
     /// A material model could not be built.
     #[error("material: {0}")]
     Material(String),
+    /// A verification problem was asked for in a form (geometry or placement) it does
+    /// not have.
+    #[error("verify {problem}: {reason}")]
+    NoSuchForm {
+        /// The problem's name.
+        problem: &'static str,
+        /// Which forms exist.
+        reason: &'static str,
+    },
 }

@@ -260,6 +260,7 @@ impl Problem {
             Problem::HelImpact => hel_impact::run(n, scheme, RZ_COLUMN),
             Problem::Contact => contact::run(n, scheme, RZ_COLUMN),
             _ => Err(no_such_form(
+                *self,
                 "this problem has no axisymmetric (RZ) form (noh-planar, hel-impact, contact, sedov-3d, noh-spherical and taylor have)",
             )),
         }
@@ -309,7 +310,7 @@ impl Problem {
         run: impl FnOnce(usize, crate::SchemeConfig) -> Result<Outcome, crate::SolverError>,
     ) -> Result<Outcome, crate::SolverError> {
         if *self != owner {
-            return Err(no_such_form(reason));
+            return Err(no_such_form(*self, reason));
         }
         let n = self.resolve(resolution, &scheme)?;
         run(n, scheme)
@@ -329,11 +330,10 @@ impl Problem {
             (Problem::Sedov2d, false) => sedov::run_2d(n, scheme, deposit),
             (Problem::Sedov3d, false) => sedov::run_3d(n, scheme, deposit),
             (Problem::Sedov3d, true) => sedov::run_rz(n, scheme, deposit),
-            _ => Err(crate::SolverError::BadConfig {
-                field: "deposit",
-                value: 0.0,
-                reason: "only the Sedov problems (sedov-2d, sedov-3d) have an energy deposit",
-            }),
+            _ => Err(no_such_form(
+                *self,
+                "only sedov-2d (plane) and sedov-3d (3-D or RZ) have an energy deposit",
+            )),
         }
     }
 
@@ -367,10 +367,9 @@ impl Problem {
 }
 
 /// The error for a problem run in a geometry it has no form in.
-fn no_such_form(reason: &'static str) -> crate::SolverError {
-    crate::SolverError::BadConfig {
-        field: "geometry",
-        value: 0.0,
+fn no_such_form(problem: Problem, reason: &'static str) -> crate::SolverError {
+    crate::SolverError::NoSuchForm {
+        problem: problem.name(),
         reason,
     }
 }
