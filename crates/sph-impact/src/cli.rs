@@ -96,8 +96,29 @@ pub fn scheme_with_overrides(
         return Err("--scheme: expected a JSON object of scheme fields".into());
     }
     let mut merged = serde_json::to_value(&base).map_err(|e| e.to_string())?;
-    merge(&mut merged, patch);
-    serde_json::from_value(merged).map_err(|e| format!("--scheme: {e}"))
+    merge(&mut merged, patch.clone());
+    let scheme: crate::SchemeConfig =
+        serde_json::from_value(merged).map_err(|e| format!("--scheme: {e}"))?;
+    // serde drops extra keys next to the tag of a unit variant (`{"kind": "scalar",
+    // "max_aspect": 4}`); every key given must survive the round trip.
+    let kept = serde_json::to_value(&scheme).map_err(|e| e.to_string())?;
+    match dropped_key(&patch, &kept) {
+        Some(key) => Err(format!(
+            "--scheme: unknown field `{key}` (not a setting of the scheme as given)"
+        )),
+        None => Ok(scheme),
+    }
+}
+
+/// The first key path of `patch` missing from `kept`, as `a.b.c`.
+fn dropped_key(patch: &serde_json::Value, kept: &serde_json::Value) -> Option<String> {
+    let (serde_json::Value::Object(p), serde_json::Value::Object(k)) = (patch, kept) else {
+        return None;
+    };
+    p.iter().find_map(|(key, value)| match k.get(key) {
+        None => Some(key.clone()),
+        Some(inner) => dropped_key(value, inner).map(|rest| format!("{key}.{rest}")),
+    })
 }
 
 fn merge(into: &mut serde_json::Value, patch: serde_json::Value) {
@@ -268,4 +289,35 @@ pub fn materials(json: bool) -> Result<(), CommandError> {
         serde_json::to_string_pretty(&out).map_err(CommandError::failed)?
     );
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::scheme_with_overrides;
+
+    /// A misspelt or misplaced field anywhere in `--scheme` is an error naming it, not a
+    /// silently ignored key (before, `{"smoothing":{"asph":{…}}}` ran the scalar scheme).
+    #[test]
+    fn scheme_overrides_reject_unknown_fields_at_every_level() {
+        let base = crate::SchemeConfig::default;
+        for (text, field) in [
+            (r#"{"bogus": 1}"#, "bogus"),
+            (r#"{"viscosity": {"alhpa": 0.5}}"#, "alhpa"),
+            (r#"{"artificial_stress": {"eps": 0.2}}"#, "eps"),
+            (r#"{"smoothing": {"asph": {"max_aspect": 4.0}}}"#, "asph"),
+            (
+                r#"{"smoothing": {"kind": "asph", "max_aspect": 4.0, "x": 1}}"#,
+                "x",
+            ),
+            (r#"{"riemann": {"kind": "acoustic", "speed": 1}}"#, "speed"),
+        ] {
+            let e = scheme_with_overrides(base(), Some(text)).unwrap_err();
+            assert!(e.contains(field), "{text}: {e}");
+        }
+        let asph = r#"{"smoothing": {"kind": "asph", "max_aspect": 4.0}}"#;
+        let s = scheme_with_overrides(base(), Some(asph)).unwrap();
+        assert_eq!(s.smoothing, crate::SmoothingMode::Asph { max_aspect: 4.0 });
+        let v = scheme_with_overrides(base(), Some(r#"{"viscosity": {"alpha": 0.5}}"#)).unwrap();
+        assert_eq!((v.viscosity.alpha, v.viscosity.beta), (0.5, 1.0));
+    }
 }

@@ -31,6 +31,7 @@ pub enum ArtificialStressForm {
 
 /// Parameters of the artificial stress.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct ArtificialStress {
     /// Strength ε (the study: 0.2; 0 disables).
     pub epsilon: f64,

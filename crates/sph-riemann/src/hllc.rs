@@ -70,7 +70,7 @@ pub fn hllc_star_with_speeds(left: &SideState, right: &SideState, sl: f64, sr: f
 
 /// How the pair's star state is computed.
 #[derive(Clone, Copy, Debug, Default, PartialEq, serde::Serialize, serde::Deserialize)]
-#[serde(rename_all = "kebab-case", tag = "kind")]
+#[serde(rename_all = "kebab-case", tag = "kind", deny_unknown_fields)]
 pub enum RiemannSolver {
     /// Linearised acoustic solution (the study's written form).
     #[default]

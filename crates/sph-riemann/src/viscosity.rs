@@ -14,6 +14,7 @@ use sph_core::Vector;
 
 /// Coefficients of the Monaghan viscosity.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct MonaghanViscosity {
     /// Linear coefficient α_Π (the study: 1).
     pub alpha: f64,

@@ -8,7 +8,12 @@ use sph_core::{Dimension, Tensor, Vector};
 
 /// A boundary condition.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
-#[serde(bound = "", rename_all = "kebab-case", tag = "kind")]
+#[serde(
+    bound = "",
+    rename_all = "kebab-case",
+    tag = "kind",
+    deny_unknown_fields
+)]
 pub enum Boundary<D: Dimension> {
     /// A rigid, frictionless wall: the plane through `point` with unit `normal`
     /// pointing into the material. Ghosts mirror position and the normal velocity.

@@ -53,7 +53,7 @@ pub enum MomentumForm {
 
 /// How smoothing lengths follow the flow.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
-#[serde(rename_all = "kebab-case", tag = "kind")]
+#[serde(rename_all = "kebab-case", tag = "kind", deny_unknown_fields)]
 pub enum SmoothingMode {
     /// Scalar support radius h_i = n_target (m_i/ρ_i)^(1/d), set from the density at every
     /// stage, so the neighbour count stays near its target as the material compresses.
