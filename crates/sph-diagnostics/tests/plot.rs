@@ -898,3 +898,24 @@ fn demo_small_panel() {
         .unwrap();
     fig.save_png("/tmp/plot_small.png").unwrap();
 }
+
+/// A figure title wider than the figure at its usual scale is drawn smaller so that it
+/// fits (the speed-vs-error plot's title was cut off at both edges).
+#[test]
+fn a_long_figure_title_shrinks_to_fit_the_width() {
+    let title = "Basalt impact at 3.9 km/s: error against Table 2 vs runtime";
+    let mut fig = Figure::new(500, 300);
+    fig.title(title);
+    fig.axes()
+        .line(&[0.0, 1.0], &[0.0, 1.0], Style::line(BLACK))
+        .unwrap();
+    let (canvas, _) = fig.render().unwrap();
+    // The title's band: from y = 10 down by the tallest scale it could have.
+    let band = 10..10 + font::text_height(3) as i64;
+    let inked = |x: i64| band.clone().any(|y| canvas.pixel(x, y) != Some(WHITE));
+    let columns: Vec<i64> = (0..500).filter(|&x| inked(x)).collect();
+    let (first, last) = (columns[0], *columns.last().unwrap());
+    println!("title ink from x = {first} to {last} of 500");
+    assert!(first >= 5 && last <= 494, "{first}..{last}");
+    assert!(last - first > 250, "{first}..{last}");
+}

@@ -128,7 +128,13 @@ impl Figure {
         let (w, h) = (self.width as i64, self.height as i64);
         let mut top = 0;
         if !self.title.is_empty() {
-            let s = self.text_scale + 1;
+            // One text scale larger than the panels', smaller if it would not fit the
+            // width (a long title was cut off at both edges).
+            let fits = |s: u32| i64::from(font::text_width(&self.title, s)) + 20 <= w;
+            let s = (1..=self.text_scale + 1)
+                .rev()
+                .find(|&s| fits(s))
+                .unwrap_or(1);
             let style = TextStyle::new(s).anchor(HAlign::Center, VAlign::Top);
             canvas.text(w / 2, 10, &self.title, &style);
             canvas.text(w / 2 + 1, 10, &self.title, &style);
