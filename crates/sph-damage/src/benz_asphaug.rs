@@ -227,6 +227,18 @@ impl BenzAsphaug {
         Ok(BenzAsphaug::assemble(params, flaws))
     }
 
+    /// As [`Self::seed_with_volumes`], with the flaws dealt over `dealt_over` particles
+    /// of which these are the first ([`FlawSet::seed_dealt`]): e.g. an axisymmetric
+    /// body's rings, each standing for the 3-D particles around the axis.
+    pub fn seed_with_volumes_dealt(
+        params: BenzAsphaugParams,
+        volumes: &[f64],
+        dealt_over: usize,
+    ) -> Result<Self, DamageError> {
+        let flaws = FlawSet::seed_volumes_dealt(params.weibull, volumes, dealt_over, params.seed)?;
+        Ok(BenzAsphaug::assemble(params, flaws))
+    }
+
     /// Re-assembles a model from a stored flaw set (checkpoint restart); the flaws must
     /// have been seeded with these Weibull parameters and seed.
     pub fn from_flaws(params: BenzAsphaugParams, flaws: FlawSet) -> Result<Self, DamageError> {

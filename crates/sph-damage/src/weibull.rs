@@ -154,16 +154,45 @@ impl FlawSet {
         total_volume: f64,
         seed: u64,
     ) -> Result<FlawSet, DamageError> {
+        Self::seed_dealt(params, n_particles, n_particles, total_volume, seed)
+    }
+
+    /// Deals the flaws of a body of volume `total_volume` over `dealt_over` particles by
+    /// the Benz–Asphaug procedure and keeps the flaws of the first `n_particles` of them
+    /// (`n_particles ≤ dealt_over`). Each kept particle then has the flaws of one particle
+    /// of a body of `dealt_over` particles: its weakest flaw has rank ~`dealt_over`, and
+    /// about ln(`dealt_over`) + 0.58 flaws.
+    ///
+    /// An axisymmetric ring stands for the ≈ 2πr/Δ particles of a 3-D run around the
+    /// axis; dealt over the rings alone, each ring would draw the flaws of its whole
+    /// volume and be weaker than every particle it stands for. Dealt over the 3-D count,
+    /// a ring's damage against strain follows that of a 3-D particle (docs/scenes.md,
+    /// RZ). Since every dealt particle is equally likely to own each flaw, the first
+    /// `n_particles` are as good a sample as any. With `dealt_over` = `n_particles` this
+    /// is [`Self::seed_benz_asphaug`], bit for bit.
+    pub fn seed_dealt(
+        params: WeibullParams,
+        n_particles: usize,
+        dealt_over: usize,
+        total_volume: f64,
+        seed: u64,
+    ) -> Result<FlawSet, DamageError> {
         if n_particles == 0 {
             return Err(DamageError::NoParticles);
         }
         // The flaws are counted in u32 (ranks and offsets): ≈ N (ln N + 0.58) of them,
         // 1.9e9 for the limit, well inside 2^32 whatever the draw.
         let limit = Self::MAX_PARTICLES;
-        if n_particles > limit {
-            return Err(DamageError::TooManyParticles {
-                count: n_particles,
-                limit,
+        for count in [n_particles, dealt_over] {
+            if count > limit {
+                return Err(DamageError::TooManyParticles { count, limit });
+            }
+        }
+        if dealt_over < n_particles {
+            return Err(DamageError::Parameter {
+                field: "dealt_over",
+                value: dealt_over as f64,
+                reason: "the flaws must be dealt over at least the particles that keep them",
             });
         }
         if !(total_volume.is_finite() && total_volume > 0.0) {
@@ -182,30 +211,34 @@ impl FlawSet {
             });
         }
 
-        // Pass 1: draw the owner of flaws j = 1, 2, … until every particle has one.
-        let n = n_particles;
+        // Pass 1: draw the owner of flaws j = 1, 2, … until every dealt particle has
+        // one; record (owner, j) for the kept ones.
+        let (n, all) = (n_particles, dealt_over);
+        let as_u32 = |v: usize| {
+            u32::try_from(v).map_err(|_| DamageError::TooManyParticles { count: all, limit })
+        };
         let mut rng = Pcg64Mcg::seed_from_u64(seed);
+        let mut covered = vec![false; all];
         let mut counts = vec![0usize; n];
-        let expected = (n as f64 * ((n as f64).ln() + 1.0)) as usize + 1;
-        let mut owner: Vec<u32> = Vec::with_capacity(expected);
-        let mut uncovered = n;
+        let expected = (n as f64 * ((all as f64).ln() + 1.0)) as usize + 1;
+        let mut owned: Vec<(u32, u32)> = Vec::with_capacity(expected);
+        let (mut uncovered, mut j) = (all, 0usize);
         while uncovered > 0 {
-            let p = uniform_below(&mut rng, n as u64) as usize;
-            if counts[p] == 0 {
+            let p = uniform_below(&mut rng, all as u64) as usize;
+            j += 1;
+            if !covered[p] {
+                covered[p] = true;
                 uncovered -= 1;
             }
-            counts[p] += 1;
-            owner.push(p as u32);
+            if p < n {
+                counts[p] += 1;
+                owned.push((p as u32, as_u32(j)?));
+            }
         }
+        drop(covered);
 
         // Pass 2: CSR by a stable counting sort; flaws arrive in increasing j, so each
         // particle's ranks come out ascending.
-        let as_u32 = |v: usize| {
-            u32::try_from(v).map_err(|_| DamageError::TooManyParticles {
-                count: n_particles,
-                limit,
-            })
-        };
         let mut offsets = Vec::with_capacity(n + 1);
         offsets.push(0u32);
         let mut total = 0usize;
@@ -216,9 +249,9 @@ impl FlawSet {
         drop(counts);
         let mut cursor: Vec<u32> = offsets[..n].to_vec();
         let mut ranks = vec![0u32; total];
-        for (j0, &p) in owner.iter().enumerate() {
+        for &(p, rank) in &owned {
             let slot = &mut cursor[p as usize];
-            ranks[*slot as usize] = as_u32(j0 + 1)?;
+            ranks[*slot as usize] = rank;
             *slot += 1;
         }
         Ok(FlawSet {
@@ -239,6 +272,17 @@ impl FlawSet {
         volumes: &[f64],
         seed: u64,
     ) -> Result<FlawSet, DamageError> {
+        Self::seed_volumes_dealt(params, volumes, volumes.len(), seed)
+    }
+
+    /// As [`FlawSet::seed_dealt`], with the body volume V = Σ V_i from the volumes of the
+    /// particles that keep flaws (m³, each positive and finite).
+    pub fn seed_volumes_dealt(
+        params: WeibullParams,
+        volumes: &[f64],
+        dealt_over: usize,
+        seed: u64,
+    ) -> Result<FlawSet, DamageError> {
         for (index, &v) in volumes.iter().enumerate() {
             if !(v.is_finite() && v > 0.0) {
                 return Err(DamageError::ParticleValue {
@@ -250,7 +294,7 @@ impl FlawSet {
             }
         }
         let total: f64 = volumes.iter().sum();
-        Self::seed_benz_asphaug(params, volumes.len(), total, seed)
+        Self::seed_dealt(params, volumes.len(), dealt_over, total, seed)
     }
 
     /// The threshold of the j-th weakest flaw of the body (j ≥ 1), ε_j = (j/(kV))^(1/m),

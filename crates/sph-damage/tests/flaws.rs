@@ -303,3 +303,69 @@ fn memory_is_reported() {
     );
     assert!(f.memory_bytes() >= floor && f.memory_bytes() < floor + 1024);
 }
+
+/// Flaws dealt over more particles than keep them (`FlawSet::seed_dealt`; an RZ ring
+/// stands for ≈ 2πr/Δ particles of a 3-D run): dealt over the kept count it is the plain
+/// seeding bit for bit; dealt over N, each kept particle has a particle of N's flaws
+/// (about H_N of them, the weakest of rank ≈ N, i.e. ε ≈ (kV/N)^(−1/m)).
+#[test]
+fn flaws_dealt_over_more_particles_are_those_of_one_of_them() {
+    let w = WeibullParams::BASALT_STUDY;
+    let v = cylinder_volume();
+    assert_eq!(
+        FlawSet::seed_dealt(w, 500, 500, v, 7).unwrap(),
+        FlawSet::seed_benz_asphaug(w, 500, v, 7).unwrap()
+    );
+    let volumes = vec![v / 500.0; 500];
+    assert_eq!(
+        FlawSet::seed_volumes_dealt(w, &volumes, 500, 7).unwrap(),
+        FlawSet::seed_benz_asphaug_volumes(w, &volumes, 7).unwrap()
+    );
+    assert!(matches!(
+        FlawSet::seed_dealt(w, 500, 499, v, 7).unwrap_err(),
+        DamageError::Parameter {
+            field: "dealt_over",
+            ..
+        }
+    ));
+
+    // The flaw count: the body's total T/N has SD ≈ π/√6 = 1.28 per seed (coupon
+    // collector), so 50 seeds of 200 kept out of 20 000: standard error ≈ 0.19.
+    let (h, _) = harmonic(20_000);
+    let mean_count = (0..50)
+        .map(|s| {
+            FlawSet::seed_dealt(w, 200, 20_000, v, 100 + s)
+                .unwrap()
+                .mean_flaws_per_particle()
+        })
+        .sum::<f64>()
+        / 50.0;
+    println!("dealt over 20000: {mean_count:.3} flaws per kept particle (H_N {h:.3})");
+    assert!((mean_count - h).abs() < 0.75, "{mean_count} vs H_N = {h}");
+
+    let (kept, dealt) = (2_000usize, 200_000usize);
+    let f = FlawSet::seed_dealt(w, kept, dealt, v, 11).unwrap();
+    assert_eq!(f.n_particles(), kept);
+    // The weakest rank of a particle is geometric with mean ≈ N: standard error of the
+    // mean over 2000 particles ≈ 2.2 %.
+    let mean_weakest = (0..kept)
+        .map(|i| f.ranks(i).unwrap()[0] as f64)
+        .sum::<f64>()
+        / kept as f64;
+    println!("dealt over {dealt}: mean weakest rank {mean_weakest:.0}");
+    assert!(
+        (mean_weakest / dealt as f64 - 1.0).abs() < 0.1,
+        "{mean_weakest}"
+    );
+    // Against dealing over the kept particles alone, the weakest flaws are stronger by
+    // ≈ (N/n)^(1/m) = 100^(1/10) = 1.58.
+    let alone = FlawSet::seed_dealt(w, kept, kept, v, 11).unwrap();
+    let median = |f: &FlawSet| {
+        let mut e: Vec<f64> = (0..kept).map(|i| f.min_threshold(i).unwrap()).collect();
+        e.sort_by(f64::total_cmp);
+        e[kept / 2]
+    };
+    let ratio = median(&f) / median(&alone);
+    println!("median weakest threshold, dealt over {dealt} / over {kept}: {ratio:.3}");
+    assert!((ratio / 100f64.powf(0.1) - 1.0).abs() < 0.05, "{ratio}");
+}

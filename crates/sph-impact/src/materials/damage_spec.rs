@@ -121,16 +121,25 @@ impl DamageSpec {
     /// and seed → the same flaws, bit for bit). The solver integrates D^(1/3) (3-D
     /// cracks); see [`Self::build_with_variable`] for 2-D.
     pub fn build(&self, particle_volumes: &[f64], seed: u64) -> Result<BuiltinDamage, DamageError> {
-        self.build_with_variable(particle_volumes, seed, DamageVariable::CubeRoot)
+        self.build_with_variable(
+            particle_volumes,
+            seed,
+            DamageVariable::CubeRoot,
+            particle_volumes.len(),
+        )
     }
 
     /// As [`Self::build`], choosing the integrated variable of Benz–Asphaug damage
-    /// (D^(1/2) for 2-D cracks, as miluphcuda integrates D^(1/DIM)).
+    /// (D^(1/2) for 2-D cracks, as miluphcuda integrates D^(1/DIM)) and the number of
+    /// particles the flaws are dealt over, `dealt_over` ≥ the particle count: the
+    /// particle count itself in 3-D, the 3-D particles the rings stand for in RZ
+    /// ([`sph_damage::FlawSet::seed_dealt`]).
     pub fn build_with_variable(
         &self,
         particle_volumes: &[f64],
         seed: u64,
         variable: DamageVariable,
+        dealt_over: usize,
     ) -> Result<BuiltinDamage, DamageError> {
         match *self {
             Self::None => Ok(BuiltinDamage::None(NoDamage)),
@@ -155,10 +164,9 @@ impl DamageSpec {
                     .with_growth(growth)
                     .with_variable(variable)
                     .with_tail(tail);
-                Ok(BuiltinDamage::BenzAsphaug(BenzAsphaug::seed_with_volumes(
-                    params,
-                    particle_volumes,
-                )?))
+                Ok(BuiltinDamage::BenzAsphaug(
+                    BenzAsphaug::seed_with_volumes_dealt(params, particle_volumes, dealt_over)?,
+                ))
             }
         }
     }

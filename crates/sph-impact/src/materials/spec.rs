@@ -172,12 +172,13 @@ impl MaterialSpec {
 
     /// The material of one body for the solver: [`Self::solver_material`] with the damage
     /// model built for the body's particles (volumes m³, in the order the solver gets
-    /// them), seeding its flaws with `seed`, integrating `variable` (D^(1/3) for 3-D
-    /// cracks, D^(1/2) in 2-D).
+    /// them), seeding its flaws with `seed` dealt over `dealt_over` particles (the
+    /// particle count in 3-D; see [`crate::materials::DamageSpec::build_with_variable`]),
+    /// integrating `variable` (D^(1/3) for 3-D cracks, D^(1/2) in 2-D).
     pub fn body_material(
         &self,
         particle_volumes: &[f64],
-        seed: u64,
+        (seed, dealt_over): (u64, usize),
         variable: sph_damage::DamageVariable,
     ) -> Result<crate::Material, sph_damage::DamageError> {
         let mut m = self.solver_material();
@@ -186,6 +187,7 @@ impl MaterialSpec {
                 particle_volumes,
                 seed,
                 variable,
+                dealt_over,
             )?));
         }
         Ok(m)

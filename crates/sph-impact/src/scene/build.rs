@@ -138,13 +138,19 @@ impl Scene {
             // Each body is its own material: Benz–Asphaug flaws belong to one body, and
             // the flaw count of a volume depends on the volumes of its particles (the
             // rings' volumes in RZ, so the body's flaws are those of its 3-D volume).
+            // They are dealt over the 3-D particles the body's particles stand for, so
+            // that an RZ ring has the flaws of one particle of the 3-D run.
             let volumes = body.particles.volumes(rho);
             let seed = self.bodies[k]
                 .damage_seed
                 .unwrap_or(self.seed.wrapping_add(k as u64));
             let material = body
                 .material
-                .body_material(&volumes, seed, sph_damage::DamageVariable::CubeRoot)
+                .body_material(
+                    &volumes,
+                    (seed, D::stands_for(p)),
+                    sph_damage::DamageVariable::CubeRoot,
+                )
                 .map_err(|e| {
                     self.locate(SceneError::in_body(
                         k,

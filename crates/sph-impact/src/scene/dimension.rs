@@ -85,6 +85,11 @@ pub(crate) trait SceneDimension: Dimension {
     fn tensor_to_scene(t: &DMat3) -> DMat3;
     /// Wraps a simulation of this dimension.
     fn wrap(sim: Simulation<Self, KernelChoice>) -> SceneSimulation;
+    /// The number of 3-D particles a body's particles stand for, over which its
+    /// Benz–Asphaug flaws are dealt: their own count in 3-D; in RZ each ring's ≈ 2πr/Δ
+    /// points around the axis (`sph_geometry::ring_point_count`), so that a ring has the
+    /// flaws of one 3-D particle, not of its whole volume.
+    fn stands_for(p: &BodyParticles<Self::Vector>) -> usize;
 }
 
 impl SceneDimension for Dim3 {
@@ -108,6 +113,9 @@ impl SceneDimension for Dim3 {
     }
     fn wrap(sim: Simulation<Dim3, KernelChoice>) -> SceneSimulation {
         SceneSimulation::ThreeD(sim)
+    }
+    fn stands_for(p: &BodyParticles<DVec3>) -> usize {
+        p.len()
     }
 }
 
@@ -138,11 +146,50 @@ impl SceneDimension for Dim2 {
     fn wrap(sim: Simulation<Dim2, KernelChoice>) -> SceneSimulation {
         SceneSimulation::Rz(sim)
     }
+    fn stands_for(p: &BodyParticles<DVec2>) -> usize {
+        p.positions
+            .iter()
+            .zip(&p.spacing)
+            .map(|(x, &dx)| sph_geometry::ring_point_count(x.x, dx, 1))
+            .sum()
+    }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Particles at `positions`, all of spacing `dx` (the other fields do not matter here).
+    fn body<V: sph_core::Vector>(positions: Vec<V>, dx: f64) -> BodyParticles<V> {
+        let n = positions.len();
+        BodyParticles {
+            body: "b".into(),
+            positions,
+            masses: vec![1.0; n],
+            spacing: vec![dx; n],
+            density: 1.0,
+            exact_volume: None,
+            volume: 1.0,
+            raw_mass_error: None,
+            lattice_equivalent_count: n as f64,
+        }
+    }
+
+    /// An RZ body stands for the 3-D points of its revolved rings, ≈ 2πr/Δ per ring (the
+    /// count its Benz–Asphaug flaws are dealt over); a 3-D body for itself.
+    #[test]
+    fn rings_stand_for_the_points_around_the_axis() {
+        let dx = 1.0e-3;
+        let rings = body(
+            (0..4)
+                .map(|a| DVec2::new((a as f64 + 0.5) * dx, 0.0))
+                .collect(),
+            dx,
+        );
+        // round(2π(a + ½)) for a = 0…3: 3, 9, 16, 22.
+        assert_eq!(Dim2::stands_for(&rings), 3 + 9 + 16 + 22);
+        assert_eq!(Dim3::stands_for(&body(vec![DVec3::ZERO; 7], dx)), 7);
+    }
 
     #[test]
     fn rz_tensor_goes_to_the_r_theta_z_frame() {

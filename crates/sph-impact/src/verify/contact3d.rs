@@ -96,10 +96,10 @@ pub fn sphere_into_block(
     let n_proj = p.len() - n_block;
     let v = dx * dx * dx;
     let target = basalt
-        .body_material(&vec![v; n_block], 7, DamageVariable::CubeRoot)
+        .body_material(&vec![v; n_block], (7, n_block), DamageVariable::CubeRoot)
         .map_err(|e| bad(e.to_string()))?;
     let sphere = al
-        .body_material(&vec![v; n_proj], 8, DamageVariable::CubeRoot)
+        .body_material(&vec![v; n_proj], (8, n_proj), DamageVariable::CubeRoot)
         .map_err(|e| bad(e.to_string()))?;
     let count = p.len();
     let sim = simulation(
