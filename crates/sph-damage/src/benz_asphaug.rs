@@ -253,10 +253,12 @@ impl BenzAsphaug {
     /// The model of checked parameters and flaws, with the tail derived from the flaws.
     fn assemble(params: BenzAsphaugParams, flaws: FlawSet) -> BenzAsphaug {
         let tail = (params.tail == FlawTail::Continuum).then(|| {
+            // A particle's mean share is that of one of the particles the flaws were
+            // dealt over (in RZ one 3-D particle, not one ring).
             Tail::new(
                 flaws.strongest_threshold(),
                 params.weibull.k() * flaws.total_volume(),
-                flaws.n_particles(),
+                flaws.dealt_over() as usize,
                 params.weibull.m(),
             )
         });

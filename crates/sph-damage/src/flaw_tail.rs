@@ -9,7 +9,8 @@
 //!
 //! (verification.md §7). The Weibull population n(ε) = k ε^m itself has no end: a real
 //! body strained past ε_top holds flaws that keep activating. A particle of the seeded
-//! body has, on average, 1/N of the body's flaws below any strain, k (V/N) ε^m, so with
+//! body has, on average, 1/N of the body's flaws below any strain, k (V/N) ε^m (N the
+//! particles the flaws were dealt over: in RZ the 3-D particles the rings stand for), so with
 //! [`FlawTail::Continuum`] its active count continues past its seeded flaws as
 //!
 //! ```text
@@ -57,7 +58,7 @@ pub(crate) struct Tail {
 
 impl Tail {
     /// The tail of a body whose strongest seeded flaw is `top_strain`, with kV flaws per
-    /// unit strain^m over `n_particles` particles and Weibull exponent `m`.
+    /// unit strain^m dealt over `n_particles` particles and Weibull exponent `m`.
     pub(crate) fn new(top_strain: f64, kv: f64, n_particles: usize, m: f64) -> Tail {
         Tail {
             top_strain,

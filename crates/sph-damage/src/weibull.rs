@@ -54,8 +54,8 @@ fn threshold(j: u64, kv: f64, inv_m: f64) -> f64 {
 /// of particle i (the j-th weakest of the body, threshold ε_j = (j/(kV))^(1/m)) are
 /// `ranks[offsets[i]..offsets[i+1]]`, strictly ascending, at least one per particle.
 ///
-/// Serialisable for checkpoints (`params`, `total_volume`, `seed`, `offsets`, `ranks`);
-/// deserialisation checks these invariants.
+/// Serialisable for checkpoints (`params`, `total_volume`, `seed`, `offsets`, `ranks`,
+/// `dealt_over`); deserialisation checks these invariants.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(try_from = "FlawSetUnchecked")]
 pub struct FlawSet {
@@ -64,6 +64,9 @@ pub struct FlawSet {
     seed: u64,
     offsets: Vec<u32>,
     ranks: Vec<u32>,
+    /// The particles the flaws were dealt over ([`FlawSet::seed_dealt`]); the particle
+    /// count unless dealt over more.
+    dealt_over: u64,
     /// kV and 1/m, the threshold formula's constants (derived, not serialised).
     #[serde(skip)]
     kv: f64,
@@ -78,6 +81,9 @@ struct FlawSetUnchecked {
     seed: u64,
     offsets: Vec<u32>,
     ranks: Vec<u32>,
+    /// Absent in sets stored before dealing existed: the particle count.
+    #[serde(default)]
+    dealt_over: Option<u64>,
 }
 
 impl TryFrom<FlawSetUnchecked> for FlawSet {
@@ -109,12 +115,18 @@ impl TryFrom<FlawSetUnchecked> for FlawSet {
         if !(kv.is_finite() && kv > 0.0) {
             return corrupt("k*V is not positive and finite");
         }
+        let n = (raw.offsets.len() - 1) as u64;
+        let dealt_over = raw.dealt_over.unwrap_or(n);
+        if dealt_over < n {
+            return corrupt("the flaws were dealt over fewer particles than keep them");
+        }
         Ok(FlawSet {
             params: raw.params,
             total_volume: raw.total_volume,
             seed: raw.seed,
             offsets: raw.offsets,
             ranks: raw.ranks,
+            dealt_over,
             kv,
             inv_m: 1.0 / raw.params.m(),
         })
@@ -260,6 +272,7 @@ impl FlawSet {
             seed,
             offsets,
             ranks,
+            dealt_over: all as u64,
             kv,
             inv_m: 1.0 / params.m(),
         })
@@ -322,6 +335,12 @@ impl FlawSet {
     /// The seed used.
     pub fn seed(&self) -> u64 {
         self.seed
+    }
+
+    /// The number of particles the flaws were dealt over (≥ [`Self::n_particles`];
+    /// [`Self::seed_dealt`]).
+    pub fn dealt_over(&self) -> u64 {
+        self.dealt_over
     }
 
     /// Number of particles.

@@ -346,6 +346,16 @@ fn flaws_dealt_over_more_particles_are_those_of_one_of_them() {
     let (kept, dealt) = (2_000usize, 200_000usize);
     let f = FlawSet::seed_dealt(w, kept, dealt, v, 11).unwrap();
     assert_eq!(f.n_particles(), kept);
+    assert_eq!(f.dealt_over(), dealt as u64);
+    // Checkpoints keep the count; a set stored without it is dealt over its particles.
+    let json = serde_json::to_value(&f).unwrap();
+    assert_eq!(serde_json::from_value::<FlawSet>(json.clone()).unwrap(), f);
+    let mut old = json;
+    old.as_object_mut().unwrap().remove("dealt_over");
+    assert_eq!(
+        serde_json::from_value::<FlawSet>(old).unwrap().dealt_over(),
+        kept as u64
+    );
     // The weakest rank of a particle is geometric with mean ≈ N: standard error of the
     // mean over 2000 particles ≈ 2.2 %.
     let mean_weakest = (0..kept)

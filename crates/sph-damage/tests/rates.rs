@@ -130,6 +130,27 @@ fn the_continued_tail_adds_the_population_past_the_strongest_seeded_flaw() {
     let ev = seeded.evaluate(1, &inp);
     assert!((ev.rate / GROWTH - 1.0).abs() < 1e-14);
     assert_eq!(ev.active_flaws, 1);
+
+    // Flaws dealt over more particles than keep them (an RZ ring standing for 3-D
+    // particles): the tail is the mean share of one of those, k V / N_dealt.
+    let (kept, dealt, volume) = (50, 5_000, 1e-6);
+    let params = BenzAsphaugParams::new(WeibullParams::BASALT_BA99, 3)
+        .with_growth(GrowthLaw::CrackVolume)
+        .with_tail(FlawTail::Continuum);
+    let m = BenzAsphaug::seed_with_volumes_dealt(params, &vec![volume / kept as f64; kept], dealt)
+        .unwrap();
+    let top = m.flaws().strongest_threshold();
+    let n_tot = m.flaws().n_flaws(0).unwrap() as f64;
+    let kv = WeibullParams::BASALT_BA99.k() * volume;
+    let strain = 1.5 * top;
+    let expected = n_tot + kv / dealt as f64 * (strain.powi(9) - top.powi(9));
+    let ev = m.evaluate(0, &input(strain, 0.0));
+    assert!(
+        (ev.rate / (expected.cbrt() * GROWTH) - 1.0).abs() < 1e-9,
+        "{} vs {}",
+        ev.rate,
+        expected.cbrt() * GROWTH
+    );
 }
 
 #[test]
