@@ -321,10 +321,9 @@ impl DamageModel for BenzAsphaug {
         }
         // Flaw j is active when ε ≥ ε_j; past the strongest seeded flaw the continued
         // tail, if any, adds the population's mean share (crate::flaw_tail).
-        let seeded = self.flaws.activated(particle, strain).unwrap_or(0);
         let n_act = match self.tail {
             Some(tail) if strain > tail.top_strain => tail.count(n_tot, strain),
-            _ => seeded as f64,
+            _ => self.flaws.activated(particle, strain).unwrap_or(0) as f64,
         };
         let growth =
             self.params.crack_speed_fraction * input.longitudinal_wave_speed / input.particle_size;

@@ -224,30 +224,38 @@ impl FlawSet {
         }
 
         // Pass 1: draw the owner of flaws j = 1, 2, … until every dealt particle has
-        // one; record (owner, j) for the kept ones.
+        // one; record the owner of each kept flaw, and its rank j when some draws go to
+        // particles that keep nothing (otherwise j is the draw's position, as in 3-D).
         let (n, all) = (n_particles, dealt_over);
         let as_u32 = |v: usize| {
             u32::try_from(v).map_err(|_| DamageError::TooManyParticles { count: all, limit })
         };
         let mut rng = Pcg64Mcg::seed_from_u64(seed);
-        let mut covered = vec![false; all];
         let mut counts = vec![0usize; n];
+        // Particles n..all keep no flaws: only whether they have one yet matters.
+        let mut others_covered = vec![false; all - n];
         let expected = (n as f64 * ((all as f64).ln() + 1.0)) as usize + 1;
-        let mut owned: Vec<(u32, u32)> = Vec::with_capacity(expected);
+        let mut owner: Vec<u32> = Vec::with_capacity(expected);
+        let mut rank: Vec<u32> = Vec::new();
         let (mut uncovered, mut j) = (all, 0usize);
         while uncovered > 0 {
             let p = uniform_below(&mut rng, all as u64) as usize;
             j += 1;
-            if !covered[p] {
-                covered[p] = true;
+            if p < n {
+                if counts[p] == 0 {
+                    uncovered -= 1;
+                }
+                counts[p] += 1;
+                owner.push(p as u32);
+                if all > n {
+                    rank.push(as_u32(j)?);
+                }
+            } else if !others_covered[p - n] {
+                others_covered[p - n] = true;
                 uncovered -= 1;
             }
-            if p < n {
-                counts[p] += 1;
-                owned.push((p as u32, as_u32(j)?));
-            }
         }
-        drop(covered);
+        drop(others_covered);
 
         // Pass 2: CSR by a stable counting sort; flaws arrive in increasing j, so each
         // particle's ranks come out ascending.
@@ -261,9 +269,12 @@ impl FlawSet {
         drop(counts);
         let mut cursor: Vec<u32> = offsets[..n].to_vec();
         let mut ranks = vec![0u32; total];
-        for &(p, rank) in &owned {
+        for (k, &p) in owner.iter().enumerate() {
             let slot = &mut cursor[p as usize];
-            ranks[*slot as usize] = rank;
+            ranks[*slot as usize] = match rank.get(k) {
+                Some(&r) => r,
+                None => as_u32(k + 1)?,
+            };
             *slot += 1;
         }
         Ok(FlawSet {

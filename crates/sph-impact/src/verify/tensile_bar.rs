@@ -182,16 +182,15 @@ fn exponent(rows: &[[f64; 3]], window: std::ops::Range<usize>) -> f64 {
 }
 
 /// Sets a form's slow-rate strength over E ε_1 and its fitted exponent over `window`
-/// against 3/(m+3), as `{prefix}failure_stress_slowest_over_e_eps1`,
+/// against `expected` = 3/(m+3), as `{prefix}failure_stress_slowest_over_e_eps1`,
 /// `{prefix}rate_exponent` and `{prefix}rate_exponent_error_relative`.
 fn set_form(
     out: &mut Outcome,
     prefix: &str,
-    rows: &[[f64; 3]],
-    window: std::ops::Range<usize>,
+    (rows, window): (&[[f64; 3]], std::ops::Range<usize>),
     static_strength: f64,
+    expected: f64,
 ) {
-    let m = WeibullParams::BASALT_BA99.m();
     let exponent = exponent(rows, window);
     out.set(
         &format!("{prefix}failure_stress_slowest_over_e_eps1"),
@@ -200,7 +199,7 @@ fn set_form(
     out.set(&format!("{prefix}rate_exponent"), exponent);
     out.set(
         &format!("{prefix}rate_exponent_error_relative"),
-        exponent / (3.0 / (m + 3.0)) - 1.0,
+        exponent / expected - 1.0,
     );
 }
 
@@ -237,8 +236,14 @@ pub(crate) fn run(n: usize, scheme: SchemeConfig) -> Result<Outcome, SolverError
     // its own, and over the study's as well.
     out.set("failure_stress_slowest_rate", study[0][0]);
     let static_strength = e_young * eps_1;
-    set_form(&mut out, "", &study, STUDY_WINDOW, static_strength);
-    set_form(&mut out, "gk_", &gk, GK_WINDOW, static_strength);
+    set_form(
+        &mut out,
+        "",
+        (&study, STUDY_WINDOW),
+        static_strength,
+        expected,
+    );
+    set_form(&mut out, "gk_", (&gk, GK_WINDOW), static_strength, expected);
     out.set("gk_rate_exponent_study_window", exponent(&gk, STUDY_WINDOW));
     let past_top = gk[GK_WINDOW]
         .iter()
