@@ -19,6 +19,7 @@ fn inputs(n: usize, eps_scale: f64) -> Vec<DamageInput> {
                 longitudinal_wave_speed: 4593.3,
                 particle_size: 1.0e-3,
                 damage: ((i as f64 * 0.414_213_562_373_095) % 1.0) * 0.5,
+                principal_strain: None,
             }
         })
         .collect()

@@ -39,6 +39,7 @@
 //! heal when the strain drops. Which form matches the continuum Grady–Kipp strain-rate
 //! scaling σ_max ∝ ε̇^(3/(m+3)) best is measured in `tests/strain_rate.rs`.
 
+use crate::activation::ActivationStrain;
 use crate::error::DamageError;
 use crate::flaw_tail::{FlawTail, Tail};
 use crate::model::{DamageBounds, DamageEval, DamageInput, DamageModel, DamageVariable};
@@ -76,6 +77,7 @@ pub struct BenzAsphaugParams {
     growth: GrowthLaw,
     variable: DamageVariable,
     tail: FlawTail,
+    activation: ActivationStrain,
 }
 
 #[derive(Deserialize)]
@@ -90,6 +92,8 @@ struct BenzAsphaugParamsUnchecked {
     variable: DamageVariable,
     #[serde(default)]
     tail: FlawTail,
+    #[serde(default)]
+    activation: ActivationStrain,
 }
 
 fn default_crack_speed_fraction() -> f64 {
@@ -105,13 +109,15 @@ impl TryFrom<BenzAsphaugParamsUnchecked> for BenzAsphaugParams {
                 p.with_growth(raw.growth)
                     .with_variable(raw.variable)
                     .with_tail(raw.tail)
+                    .with_activation(raw.activation)
             })
     }
 }
 
 impl BenzAsphaugParams {
     /// Defaults: c_g = 0.4 c_L, [`GrowthLaw::PerActivatedFlaw`], the solver integrates
-    /// D^(1/3) (3-D cracks), only the seeded flaws exist ([`FlawTail::Seeded`]).
+    /// D^(1/3) (3-D cracks), only the seeded flaws exist ([`FlawTail::Seeded`]), flaws
+    /// activate on the stress's strain ([`ActivationStrain::Stress`]).
     pub fn new(weibull: WeibullParams, seed: u64) -> Self {
         BenzAsphaugParams {
             weibull,
@@ -120,6 +126,7 @@ impl BenzAsphaugParams {
             growth: GrowthLaw::default(),
             variable: DamageVariable::CubeRoot,
             tail: FlawTail::Seeded,
+            activation: ActivationStrain::Stress,
         }
     }
 
@@ -155,6 +162,12 @@ impl BenzAsphaugParams {
         self
     }
 
+    /// Sets the strain the flaws activate on ([`crate::activation`]).
+    pub fn with_activation(mut self, activation: ActivationStrain) -> Self {
+        self.activation = activation;
+        self
+    }
+
     /// Weibull parameters.
     pub fn weibull(&self) -> WeibullParams {
         self.weibull
@@ -178,6 +191,10 @@ impl BenzAsphaugParams {
     /// Flaws beyond the strongest seeded one.
     pub fn tail(&self) -> FlawTail {
         self.tail
+    }
+    /// The strain the flaws activate on.
+    pub fn activation(&self) -> ActivationStrain {
+        self.activation
     }
 }
 
@@ -287,6 +304,10 @@ impl DamageModel for BenzAsphaug {
 
     fn variable(&self) -> DamageVariable {
         self.params.variable
+    }
+
+    fn activation_strain(&self) -> ActivationStrain {
+        self.params.activation
     }
 
     #[inline]

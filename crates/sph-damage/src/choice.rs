@@ -38,6 +38,9 @@ impl DamageModel for BuiltinDamage {
     fn variable(&self) -> DamageVariable {
         dispatch!(self, m => m.variable())
     }
+    fn activation_strain(&self) -> crate::ActivationStrain {
+        dispatch!(self, m => m.activation_strain())
+    }
     #[inline]
     fn evaluate(&self, particle: usize, input: &DamageInput) -> DamageEval {
         dispatch!(self, m => m.evaluate(particle, input))

@@ -38,6 +38,7 @@
 //!     longitudinal_wave_speed: 4593.3,
 //!     particle_size: 1.0e-3,
 //!     damage: 0.0,
+//!     principal_strain: None,
 //! };
 //! let eval = model.evaluate(7, &input);
 //! assert!(eval.rate > 0.0); // d(D^(1/3))/dt = n_act · 0.4 c_L / R_s
@@ -51,6 +52,7 @@
 //! ## Feature flags
 //! None.
 
+pub mod activation;
 pub mod benz_asphaug;
 pub mod choice;
 pub mod elastic;
@@ -62,6 +64,7 @@ pub mod params;
 pub mod tensile;
 pub mod weibull;
 
+pub use activation::ActivationStrain;
 pub use benz_asphaug::{BenzAsphaug, BenzAsphaugParams, CRACK_SPEED_FRACTION_BA94, GrowthLaw};
 pub use choice::BuiltinDamage;
 pub use elastic::{longitudinal_wave_speed, poisson_ratio, youngs_modulus};

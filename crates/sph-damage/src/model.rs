@@ -54,10 +54,14 @@ pub struct DamageInput {
     pub particle_size: f64,
     /// Current damage D ∈ [0, 1] of this stage.
     pub damage: f64,
+    /// The largest principal value of the strain the model activates on, when it is not
+    /// the stress's ([`crate::ActivationStrain::PseudoPlastic`]); `None` for the stress
+    /// form ([`DamageModel::activation_strain`]).
+    pub principal_strain: Option<f64>,
 }
 
 impl DamageInput {
-    /// Checks the input's ranges: finite σ_1; positive finite E, c_L, R_s; D ∈ [0, 1].
+    /// Checks the input's ranges: finite σ_1 (and principal strain, if given); positive finite E, c_L, R_s; D ∈ [0, 1].
     /// The models' evaluations never panic on bad input (a NaN σ_1 gives a NaN rate), so
     /// a solver calls this where it validates its state, not in the hot loop.
     pub fn validate(&self, particle: usize) -> Result<(), DamageError> {
@@ -76,6 +80,11 @@ impl DamageInput {
                 "must be finite",
             );
         }
+        if let Some(e) = self.principal_strain
+            && !e.is_finite()
+        {
+            return bad("principal_strain", e, "must be finite");
+        }
         for (field, value) in [
             ("youngs_modulus", self.youngs_modulus),
             ("longitudinal_wave_speed", self.longitudinal_wave_speed),
@@ -91,12 +100,16 @@ impl DamageInput {
         Ok(())
     }
 
-    /// The local tensile strain ε = σ_1 / ((1 − D) E) that activates flaws (Benz &
-    /// Asphaug 1994, 1995). IEEE arithmetic: at D = 1 it is ±∞ (or NaN for σ_1 = 0);
-    /// the models return a zero rate for D ≥ 1 before using it.
+    /// The local tensile strain that activates flaws: ε = σ_1 / ((1 − D) E) (Benz &
+    /// Asphaug 1994, 1995), or ε = [`Self::principal_strain`]/(1 − D) when given
+    /// ([`crate::activation`]). IEEE arithmetic: at D = 1 it is ±∞ (or NaN for a zero
+    /// numerator); the models return a zero rate for D ≥ 1 before using it.
     #[inline]
     pub fn local_strain(&self) -> f64 {
-        self.max_principal_stress / ((1.0 - self.damage) * self.youngs_modulus)
+        match self.principal_strain {
+            Some(e) => e / (1.0 - self.damage),
+            None => self.max_principal_stress / ((1.0 - self.damage) * self.youngs_modulus),
+        }
     }
 }
 
@@ -255,6 +268,13 @@ pub trait DamageModel: Send + Sync + std::fmt::Debug {
 
     /// The variable s = D^(1/p) the solver integrates.
     fn variable(&self) -> DamageVariable;
+
+    /// The strain the flaws activate on; with [`crate::ActivationStrain::PseudoPlastic`]
+    /// the solver tracks the pseudo-plastic strain and passes it in
+    /// [`DamageInput::principal_strain`]. Default: the stress's.
+    fn activation_strain(&self) -> crate::ActivationStrain {
+        crate::ActivationStrain::Stress
+    }
 
     /// Rate of s and the bounds on D for particle `particle` in state `input`.
     fn evaluate(&self, particle: usize, input: &DamageInput) -> DamageEval;

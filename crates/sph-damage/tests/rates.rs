@@ -4,9 +4,10 @@
 use proptest::prelude::*;
 use sph_core::glam::{DMat2, DMat3};
 use sph_damage::{
-    BenzAsphaug, BenzAsphaugParams, BoundAction, BuiltinDamage, DamageBounds, DamageError,
-    DamageInput, DamageModel, DamageVariable, FlawSet, FlawTail, GrowthLaw, MaxTensileStress,
-    NoDamage, TensileFailure, WeibullParams, apply_bounds, max_principal_stress, youngs_modulus,
+    ActivationStrain, BenzAsphaug, BenzAsphaugParams, BoundAction, BuiltinDamage, DamageBounds,
+    DamageError, DamageInput, DamageModel, DamageVariable, FlawSet, FlawTail, GrowthLaw,
+    MaxTensileStress, NoDamage, TensileFailure, WeibullParams, apply_bounds, max_principal_stress,
+    youngs_modulus,
 };
 
 const E: f64 = 53.062_354_085_603_11e9; // 9·26.7·22.7/102.8 GPa
@@ -51,6 +52,7 @@ fn input(strain: f64, damage: f64) -> DamageInput {
         longitudinal_wave_speed: CL,
         particle_size: RS,
         damage,
+        principal_strain: None,
     }
 }
 
@@ -186,6 +188,46 @@ fn local_strain_divides_out_the_damage() {
     };
     assert!((inp.local_strain() / 1.2e-4 - 1.0).abs() < 1e-15);
     assert_eq!(m.evaluate(0, &inp).active_flaws, 1);
+}
+
+/// A principal strain given by the solver (pseudo-plastic activation) replaces the
+/// stress's: a compressive σ_1 does not matter, the strain is divided by (1 − D), and a
+/// non-finite one is reported by `validate`.
+#[test]
+fn a_given_principal_strain_replaces_the_stress_strain() {
+    let m = small_model(GrowthLaw::PerActivatedFlaw);
+    let inp = DamageInput {
+        max_principal_stress: -1e9,
+        principal_strain: Some(0.6e-4),
+        ..input(0.0, 0.5)
+    };
+    assert!((inp.local_strain() / 1.2e-4 - 1.0).abs() < 1e-15);
+    assert_eq!(m.evaluate(0, &inp).active_flaws, 1);
+    let below = DamageInput {
+        principal_strain: Some(-1e-3),
+        max_principal_stress: 1e9,
+        ..input(0.0, 0.0)
+    };
+    assert_eq!(m.evaluate(0, &below).rate, 0.0);
+    let nan = DamageInput {
+        principal_strain: Some(f64::NAN),
+        ..input(0.0, 0.0)
+    };
+    match nan.validate(4) {
+        Err(DamageError::ParticleValue { field, index, .. }) => {
+            assert_eq!((field, index), ("principal_strain", 4))
+        }
+        other => panic!("{other:?}"),
+    }
+    // The model reports the activation it was built with.
+    assert_eq!(m.activation_strain(), ActivationStrain::Stress);
+    let params = BenzAsphaugParams::new(WeibullParams::BASALT_BA99, 0)
+        .with_activation(ActivationStrain::PseudoPlastic);
+    let pp = BenzAsphaug::from_flaws(params, small_flaws(0)).unwrap();
+    assert_eq!(pp.activation_strain(), ActivationStrain::PseudoPlastic);
+    // The enum of built-in models passes it on (the solver sees models through it).
+    let builtin = BuiltinDamage::BenzAsphaug(pp);
+    assert_eq!(builtin.activation_strain(), ActivationStrain::PseudoPlastic);
 }
 
 #[test]

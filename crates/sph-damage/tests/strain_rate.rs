@@ -112,6 +112,7 @@ fn benz_asphaug_peak(model: &BenzAsphaug, rate: f64, e: f64, cl: f64, rs: f64) -
         longitudinal_wave_speed: cl,
         particle_size: rs,
         damage: d,
+        principal_strain: None,
     };
     for _ in 0..10_000_000 {
         let strain0 = rate * t;

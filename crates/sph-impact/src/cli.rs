@@ -310,6 +310,10 @@ mod tests {
                 "x",
             ),
             (r#"{"riemann": {"kind": "acoustic", "speed": 1}}"#, "speed"),
+            (
+                r#"{"smoothing": {"kind": "scalar", "max_aspect": 4.0}}"#,
+                "max_aspect",
+            ),
         ] {
             let e = scheme_with_overrides(base(), Some(text)).unwrap_err();
             assert!(e.contains(field), "{text}: {e}");

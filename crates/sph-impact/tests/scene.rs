@@ -204,6 +204,14 @@ fn unknown_keys() {
         m.starts_with("scene.toml:22:1: `solver.kernal`: unknown key `kernal`"),
         "{m}"
     );
+    // A key beside the scalar smoothing's tag (it has none of its own) is rejected too.
+    let m = message(&format!(
+        "{BASE}[solver]\nsmoothing = {{ kind = \"scalar\", max_aspect = 4.0 }}\n"
+    ));
+    assert!(
+        m.starts_with("scene.toml:21:32: `solver.smoothing.max_aspect`: unknown key `max_aspect`"),
+        "{m}"
+    );
 }
 
 #[test]
@@ -677,5 +685,14 @@ fn check_the_study_scene_in_rz() {
     assert_eq!(report.bodies[1].particles, 6362);
     assert!(report.bodies[0].mass_error.unwrap().abs() < 1e-12);
     assert!(report.bodies[1].mass_error.unwrap().abs() < 1e-3);
+    // The target's flaws are dealt over the 3-D particles its rings stand for (the
+    // projectile's damage is the maximum tensile stress: no flaws).
+    assert_eq!(report.bodies[0].flaws_dealt_over, None);
+    assert_eq!(report.bodies[1].flaws_dealt_over, Some(1_003_164));
+    assert!(
+        report
+            .to_text()
+            .contains("dealt over 1003164 particles of the 3-D body")
+    );
     assert!((report.first_dt_s / (0.25 * 0.5e-3 / (6300.0 + 3900.0)) - 1.0).abs() < 1e-3);
 }

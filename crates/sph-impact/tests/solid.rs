@@ -4,7 +4,9 @@
 
 use sph_core::glam::DVec2;
 use sph_core::{Dim1, Dim2, ParticleInit, Particles};
-use sph_damage::{BenzAsphaug, BenzAsphaugParams, MaxTensileStress, WeibullParams};
+use sph_damage::{
+    ActivationStrain, BenzAsphaug, BenzAsphaugParams, MaxTensileStress, WeibullParams,
+};
 use sph_eos::{LinearElastic, LinearElasticParams};
 use sph_impact::{Material, SchemeConfig, Simulation};
 use sph_kernel::WendlandC2;
@@ -34,7 +36,20 @@ fn elastic() -> (LinearElastic, VonMises) {
 /// A 1-D bar of `n` particles in homogeneous stretching at `rate`, with 5 held particles
 /// beyond each end (no damage there), the bar failing at σ_b.
 fn pulled_bar(n: usize, rate: f64, sigma_b: f64) -> Simulation<Dim1, WendlandC2> {
-    let (eos, strength) = elastic();
+    let (_, strength) = elastic();
+    bar(n, rate, strength, MaxTensileStress::new(sigma_b).unwrap())
+}
+
+/// A 1-D bar of `n` particles of strength `strength` and damage `damage`, stretched
+/// homogeneously at `rate` (compressed for rate < 0), with 5 held particles beyond
+/// each end (no damage there).
+fn bar(
+    n: usize,
+    rate: f64,
+    strength: VonMises,
+    damage: impl sph_damage::DamageModel + 'static,
+) -> Simulation<Dim1, WendlandC2> {
+    let (eos, _) = elastic();
     let dx = 1.0e-3;
     let hold = 5;
     let mut p = Particles::<Dim1>::new();
@@ -60,8 +75,7 @@ fn pulled_bar(n: usize, rate: f64, sigma_b: f64) -> Simulation<Dim1, WendlandC2>
         unbonded_interfaces: false,
         ..Default::default()
     };
-    let bar =
-        Material::solid("bar", eos, strength).with_damage(MaxTensileStress::new(sigma_b).unwrap());
+    let bar = Material::solid("bar", eos, strength).with_damage(damage);
     let ends = Material::solid("held ends", eos, strength);
     let mut sim =
         Simulation::new(p, vec![bar, ends], scheme, WendlandC2, Vec::new(), None).unwrap();
@@ -139,6 +153,102 @@ fn a_bar_fails_at_the_tensile_threshold_and_unloads() {
         (dp - sim.boundary_impulse).abs() <= 1e-12 * scale,
         "Δp {dp} vs impulse {}",
         sim.boundary_impulse
+    );
+}
+
+/// The pseudo-plastic strain (sph_damage::activation) in a bar squeezed in uniaxial
+/// strain: while elastic it is S/G; past yield S stays on the yield surface while the
+/// strain keeps growing at the elastic rate; its positive lateral principal value
+/// activates flaws in compression, where the stress form activates none.
+#[test]
+fn pseudo_plastic_strain_grows_through_yield_and_activates_flaws_in_compression() {
+    let (n, rate, steps) = (20, -2000.0, 40);
+    let von_mises = |y| {
+        VonMises::new(VonMisesParams {
+            yield_strength: y,
+            shear_modulus: SHEAR,
+            hardening: None,
+        })
+        .unwrap()
+    };
+    // Flaws of 1 mm³ particles with Weibull k (m⁻³), m = 10: basalt's k = 2.7e41 gives
+    // thresholds ~1e-3, k = 1e10 thresholds ~1 that nothing here reaches.
+    let flaws = |activation, k| {
+        let params = BenzAsphaugParams::new(WeibullParams::new(k, 10.0).unwrap(), 7)
+            .with_activation(activation);
+        BenzAsphaug::seed(params, n, n as f64 * 1.0e-9).unwrap()
+    };
+    let run = |y, activation, k| {
+        let mut sim = bar(n, rate, von_mises(y), flaws(activation, k));
+        for _ in 0..steps {
+            sim.step(f64::INFINITY).unwrap();
+        }
+        sim
+    };
+    let middle = |sim: &Simulation<Dim1, WendlandC2>| {
+        (0..sim.state.particles.len())
+            .filter(|&i| sim.state.particles.position[i].abs() < 5.0e-3)
+            .collect::<Vec<_>>()
+    };
+    // Elastic and intact: ε_pp = S/G to rounding.
+    let elastic = run(1.0e12, ActivationStrain::PseudoPlastic, 1.0e10);
+    assert!(elastic.damage().iter().all(|&d| d == 0.0));
+    for &i in &middle(&elastic) {
+        let (e, s) = (
+            elastic.state.pseudo_strain[i],
+            elastic.state.stress[i] * (1.0 / SHEAR),
+        );
+        let scale = s.abs().to_cols_array().into_iter().fold(0.0, f64::max);
+        assert!(scale > 1e-4, "the bar is strained: {scale}");
+        assert!(
+            (e - s)
+                .abs()
+                .to_cols_array()
+                .iter()
+                .all(|&x| x <= 1e-9 * scale)
+        );
+        // Uniaxial compression: S_xx < 0, the lateral S_yy = S_zz = −S_xx/2 > 0.
+        assert!(
+            e.x_axis.x < 0.0 && e.y_axis.y > 0.0 && e.z_axis.z > 0.0,
+            "{e}"
+        );
+    }
+    // Past yield: √(3J2) stays at Y, while ε_pp keeps growing as the elastic strain does.
+    let y = 50.0e6;
+    let soft = run(y, ActivationStrain::PseudoPlastic, 1.0e10);
+    for &i in &middle(&soft) {
+        let s = soft.state.stress[i];
+        let j2 = 0.5 * (s * s.transpose()).diagonal().element_sum();
+        assert!(
+            (3.0 * j2).sqrt() <= y * (1.0 + 1e-9),
+            "on the yield surface"
+        );
+        let e_yield = soft.state.pseudo_strain[i].y_axis.y;
+        let e_elastic = elastic.state.pseudo_strain[i].y_axis.y;
+        assert!(
+            e_yield > 2.0 * s.y_axis.y / SHEAR && (e_yield / e_elastic - 1.0).abs() < 0.05,
+            "ε_pp {e_yield} against S/G {} and the elastic bar's {e_elastic}",
+            s.y_axis.y / SHEAR
+        );
+    }
+    // Basalt's flaws: compression activates them on the pseudo-plastic strain, not on the
+    // stress (which is not tracked then).
+    let pseudo = run(1.0e12, ActivationStrain::PseudoPlastic, 2.7e41);
+    let stress_form = run(1.0e12, ActivationStrain::Stress, 2.7e41);
+    assert_eq!(stress_form.state.pseudo_strain.len(), 0, "not tracked");
+    let d = pseudo.damage();
+    let active = middle(&pseudo).iter().filter(|&&i| d[i] > 0.0).count();
+    println!(
+        "compression: {active} of {} middle particles damaged (pseudo-plastic)",
+        middle(&pseudo).len()
+    );
+    assert!(
+        active > 0,
+        "compression activates flaws on the pseudo-plastic strain"
+    );
+    assert!(
+        stress_form.damage().iter().all(|&x| x == 0.0),
+        "but not on the stress"
     );
 }
 

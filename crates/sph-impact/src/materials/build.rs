@@ -7,10 +7,13 @@ use crate::materials::damage_spec::DamageSpec;
 use crate::materials::eos_choice::EosChoice;
 use crate::materials::error::{Location, MaterialError};
 use crate::materials::sections::{
-    FLAW_TAILS, GROWTH_LAWS, LUNDBORG_TENSIONS, Section, TENSILE_FAILURES, Value,
+    ACTIVATION_STRAINS, FLAW_TAILS, GROWTH_LAWS, LUNDBORG_TENSIONS, Section, TENSILE_FAILURES,
+    Value,
 };
 use crate::materials::strength_choice::StrengthChoice;
-use sph_damage::{CRACK_SPEED_FRACTION_BA94, DamageError, FlawTail, GrowthLaw, TensileFailure};
+use sph_damage::{
+    ActivationStrain, CRACK_SPEED_FRACTION_BA94, DamageError, FlawTail, GrowthLaw, TensileFailure,
+};
 use sph_eos::{
     EosError, IdealGas, IdealGasParams, LinearElastic, LinearElasticParams, MieGruneisen,
     MieGruneisenParams, Murnaghan, MurnaghanParams, ThermalModel, ThermalParams, Tillotson,
@@ -112,7 +115,7 @@ pub(crate) const DAMAGE_MODELS: [(&str, &[&str]); 3] = [
     ),
     (
         "benz-asphaug",
-        &["k", "m", "crack_speed_fraction", "growth", "tail"],
+        &["k", "m", "crack_speed_fraction", "growth", "tail", "strain"],
     ),
 ];
 
@@ -572,6 +575,9 @@ pub(crate) fn build_damage(sec: &Section, cx: &Cx) -> Result<DamageSpec, Materia
             tail: cx
                 .option(sec, "tail", &FLAW_TAILS)?
                 .unwrap_or(FlawTail::default()),
+            strain: cx
+                .option(sec, "strain", &ACTIVATION_STRAINS)?
+                .unwrap_or(ActivationStrain::default()),
         },
     };
     spec.validate().map_err(|e| cx.damage_error(sec, e))?;

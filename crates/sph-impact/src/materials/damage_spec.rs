@@ -4,8 +4,9 @@
 //! builder turns them into a model per body with [`DamageSpec::build`].
 
 use sph_damage::{
-    BenzAsphaug, BenzAsphaugParams, BuiltinDamage, CRACK_SPEED_FRACTION_BA94, DamageError,
-    DamageVariable, FlawTail, GrowthLaw, MaxTensileStress, NoDamage, TensileFailure, WeibullParams,
+    ActivationStrain, BenzAsphaug, BenzAsphaugParams, BuiltinDamage, CRACK_SPEED_FRACTION_BA94,
+    DamageError, DamageVariable, FlawTail, GrowthLaw, MaxTensileStress, NoDamage, TensileFailure,
+    WeibullParams,
 };
 
 /// The damage model of a material (paper §3.3).
@@ -36,6 +37,8 @@ pub enum DamageSpec {
         growth: GrowthLaw,
         /// Flaws beyond the strongest seeded one (sph_damage::flaw_tail).
         tail: FlawTail,
+        /// The strain the flaws activate on (sph_damage::activation).
+        strain: ActivationStrain,
     },
 }
 
@@ -50,8 +53,8 @@ impl DamageSpec {
     }
 
     /// Benz–Asphaug with Weibull k (m⁻³) and m, crack speed 0.4 c_L, the default growth
-    /// law ([`GrowthLaw::PerActivatedFlaw`]) and only the seeded flaws
-    /// ([`FlawTail::Seeded`]).
+    /// law ([`GrowthLaw::PerActivatedFlaw`]), only the seeded flaws
+    /// ([`FlawTail::Seeded`]) and activation on the stress ([`ActivationStrain::Stress`]).
     pub fn benz_asphaug(k: f64, m: f64) -> Self {
         Self::BenzAsphaug {
             k,
@@ -59,6 +62,7 @@ impl DamageSpec {
             crack_speed_fraction: CRACK_SPEED_FRACTION_BA94,
             growth: GrowthLaw::default(),
             tail: FlawTail::default(),
+            strain: ActivationStrain::default(),
         }
     }
 
@@ -158,12 +162,14 @@ impl DamageSpec {
                 crack_speed_fraction,
                 growth,
                 tail,
+                strain,
             } => {
                 let params = BenzAsphaugParams::new(WeibullParams::new(k, m)?, seed)
                     .with_crack_speed_fraction(crack_speed_fraction)?
                     .with_growth(growth)
                     .with_variable(variable)
-                    .with_tail(tail);
+                    .with_tail(tail)
+                    .with_activation(strain);
                 Ok(BuiltinDamage::BenzAsphaug(
                     BenzAsphaug::seed_with_volumes_dealt(params, particle_volumes, dealt_over)?,
                 ))

@@ -5,7 +5,7 @@
 use crate::materials::damage_spec::DamageSpec;
 use crate::materials::eos_choice::EosChoice;
 use crate::materials::strength_choice::StrengthChoice;
-use sph_damage::{FlawTail, GrowthLaw, TensileFailure};
+use sph_damage::{ActivationStrain, FlawTail, GrowthLaw, TensileFailure};
 use sph_eos::{DEFAULT_SOUND_SPEED_FLOOR_FRACTION, ThermalModel};
 use sph_strength::{BuiltinStrength, LundborgTension};
 use std::ops::Range;
@@ -92,6 +92,12 @@ pub(crate) const GROWTH_LAWS: [(&str, GrowthLaw); 4] = [
 pub(crate) const FLAW_TAILS: [(&str, FlawTail); 2] = [
     ("seeded", FlawTail::Seeded),
     ("continuum", FlawTail::Continuum),
+];
+
+/// Names of [`ActivationStrain`] in material files (`[damage] strain`).
+pub(crate) const ACTIVATION_STRAINS: [(&str, ActivationStrain); 2] = [
+    ("stress", ActivationStrain::Stress),
+    ("pseudo-plastic", ActivationStrain::PseudoPlastic),
 ];
 
 /// Names of [`LundborgTension`] in material files.
@@ -259,12 +265,14 @@ pub(crate) fn damage_section(damage: &DamageSpec) -> Section {
             crack_speed_fraction,
             growth,
             tail,
+            strain,
         } => Section::new(Some("benz-asphaug"))
             .num("k", k)
             .num("m", m)
             .num("crack_speed_fraction", crack_speed_fraction)
             .name("growth", name_of(&GROWTH_LAWS, growth))
-            .name("tail", name_of(&FLAW_TAILS, tail)),
+            .name("tail", name_of(&FLAW_TAILS, tail))
+            .name("strain", name_of(&ACTIVATION_STRAINS, strain)),
     }
 }
 

@@ -141,6 +141,7 @@ section_table!(
         m => "m",
         growth => "growth",
         tail => "tail",
+        strain => "strain",
     }
 );
 

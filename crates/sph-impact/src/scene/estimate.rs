@@ -64,6 +64,9 @@ pub struct BodyReport {
     pub max_spacing_m: f64,
     /// Longitudinal wave speed at rest c_L (m/s).
     pub wave_speed_m_s: f64,
+    /// With Benz–Asphaug damage: the number of 3-D particles the flaws are dealt over
+    /// (the particle count in 3-D, Σ round(2πr/Δ) over the rings in RZ); else `None`.
+    pub flaws_dealt_over: Option<usize>,
 }
 
 /// The report of `sph-impact check`.
@@ -125,6 +128,11 @@ impl Scene {
                 min_spacing_m: info.spacing.0,
                 max_spacing_m: info.spacing.1,
                 wave_speed_m_s: b.material.longitudinal_wave_speed().unwrap_or(0.0),
+                flaws_dealt_over: matches!(
+                    b.material.damage,
+                    crate::materials::DamageSpec::BenzAsphaug { .. }
+                )
+                .then(|| b.particles.stands_for()),
             });
         }
         let dx = bodies
@@ -207,6 +215,12 @@ impl CheckReport {
                 b.max_spacing_m * 1e3,
                 b.wave_speed_m_s
             );
+            if let Some(n) = b.flaws_dealt_over {
+                let _ = writeln!(
+                    s,
+                    "  flaws         Benz–Asphaug, dealt over {n} particles of the 3-D body"
+                );
+            }
         }
         let _ = writeln!(s, "particles       {}", self.particles);
         let _ = writeln!(

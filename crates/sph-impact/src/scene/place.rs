@@ -38,6 +38,17 @@ impl PlacedParticles {
         }
     }
 
+    /// The number of 3-D particles the body's particles stand for, over which its
+    /// Benz–Asphaug flaws are dealt (`SceneDimension::stands_for`): its own count in 3-D
+    /// and for a quarter, Σ round(2πr/Δ) over the rings in RZ.
+    pub fn stands_for(&self) -> usize {
+        use crate::scene::dimension::SceneDimension;
+        match self {
+            Self::ThreeD(p) | Self::Quarter(p) => sph_core::Dim3::stands_for(p),
+            Self::Rz(p) => sph_core::Dim2::stands_for(p),
+        }
+    }
+
     /// True without particles (placements never return this).
     pub fn is_empty(&self) -> bool {
         self.len() == 0

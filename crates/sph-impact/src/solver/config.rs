@@ -52,8 +52,17 @@ pub enum MomentumForm {
 }
 
 /// How smoothing lengths follow the flow.
+///
+/// Read through [`SmoothingModeRepr`], so that a key next to `kind = "scalar"` is an
+/// error like one next to `kind = "asph"` (serde ignores extra keys beside a unit
+/// variant's tag).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
-#[serde(rename_all = "kebab-case", tag = "kind", deny_unknown_fields)]
+#[serde(
+    rename_all = "kebab-case",
+    tag = "kind",
+    deny_unknown_fields,
+    from = "SmoothingModeRepr"
+)]
 pub enum SmoothingMode {
     /// Scalar support radius h_i = n_target (m_i/ρ_i)^(1/d), set from the density at every
     /// stage, so the neighbour count stays near its target as the material compresses.
@@ -67,6 +76,24 @@ pub enum SmoothingMode {
         /// Largest allowed ratio of the longest to the shortest support axis.
         max_aspect: f64,
     },
+}
+
+/// The serialized form of [`SmoothingMode`]: every variant a struct, so unknown keys are
+/// rejected for each.
+#[derive(Deserialize)]
+#[serde(rename_all = "kebab-case", tag = "kind", deny_unknown_fields)]
+enum SmoothingModeRepr {
+    Scalar {},
+    Asph { max_aspect: f64 },
+}
+
+impl From<SmoothingModeRepr> for SmoothingMode {
+    fn from(repr: SmoothingModeRepr) -> Self {
+        match repr {
+            SmoothingModeRepr::Scalar {} => SmoothingMode::Scalar,
+            SmoothingModeRepr::Asph { max_aspect } => SmoothingMode::Asph { max_aspect },
+        }
+    }
 }
 
 /// The numerical scheme.

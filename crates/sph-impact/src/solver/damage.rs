@@ -106,6 +106,17 @@ pub(crate) fn damage_rates<D: Dimension>(
                     longitudinal_wave_speed: sph_damage::longitudinal_wave_speed(k, g, rho),
                     particle_size: input.spacing[i],
                     damage: d,
+                    // λ_max of the pseudo-plastic strain (3×3: in RZ with the hoop
+                    // entry) where the model activates on it; none is tracked in a
+                    // run without strength, where it stays zero.
+                    principal_strain: (model.activation_strain()
+                        == sph_damage::ActivationStrain::PseudoPlastic)
+                        .then(|| {
+                            state
+                                .pseudo_strain
+                                .get(i)
+                                .map_or(0.0, sph_damage::max_principal_stress)
+                        }),
                 },
             );
             DamageRate {
@@ -242,6 +253,7 @@ mod tests {
             spacing0: vec![1.0; 3],
             stress: Vec::new(),
             plastic_strain: Vec::new(),
+            pseudo_strain: Vec::new(),
             plastic_strain_rate: Vec::new(),
             damage_state: vec![0.3, 0.3, 0.0],
             damage_index: vec![0, 1, 0],

@@ -205,6 +205,18 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
             (Vec::new(), Vec::new())
         };
         let (damage_state, damage_index) = damage_setup(&particles, &materials)?;
+        // The pseudo-plastic strain only when a damage model activates on it (it needs
+        // the deviatoric stress rate, so only with strength).
+        let pseudo_strain = if solid
+            && materials.iter().any(|m| {
+                m.damage.as_ref().is_some_and(|d| {
+                    d.activation_strain() == sph_damage::ActivationStrain::PseudoPlastic
+                })
+            }) {
+            vec![sph_core::glam::DMat3::ZERO; n]
+        } else {
+            Vec::new()
+        };
         let rz = scheme.geometry == Geometry::Axisymmetric;
         let radius0 = if rz {
             particles.position.iter().map(|x| radius(*x)).collect()
@@ -219,6 +231,7 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
                 stress,
                 plastic_strain_rate: plastic_strain.clone(),
                 plastic_strain,
+                pseudo_strain,
                 damage_state,
                 damage_index,
                 time: 0.0,
@@ -853,6 +866,8 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
 
     /// S ← S + dt dS/dt, then the radial return onto the yield surface at the stage's
     /// pressure; the plastic strain grows by (√(3J2_trial) − Y)/(3G) (Wilkins 1964).
+    /// Where tracked, the pseudo-plastic strain grows by dt (dS/dt)/G with the elastic
+    /// (trial) rate, before the return (sph_damage::activation).
     /// dS/dt = 2G ε̇' + ΩS − SΩ (Jaumann) is formed here from the stage's strain-rate
     /// velocity gradient and the stress of `rate_state`, the state the stage was evaluated
     /// at, with the particle's velocity gradient embedded in 3-D (1-D uniaxial and 2-D
@@ -864,11 +879,23 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
             _ => None,
         };
         let grads = stage.grads.as_ref();
-        let updated: Vec<(sph_core::glam::DMat3, f64, f64)> = (0..y.particles.len())
+        let pseudo = !y.pseudo_strain.is_empty();
+        type Updated = (sph_core::glam::DMat3, f64, f64, sph_core::glam::DMat3);
+        let updated: Vec<Updated> = (0..y.particles.len())
             .into_par_iter()
             .map(|i| {
+                let pseudo_0 = if pseudo {
+                    y.pseudo_strain[i]
+                } else {
+                    sph_core::glam::DMat3::ZERO
+                };
                 let Some(model) = &self.materials[y.particles.material[i] as usize].strength else {
-                    return (sph_core::glam::DMat3::ZERO, y.plastic_strain[i], 0.0);
+                    return (
+                        sph_core::glam::DMat3::ZERO,
+                        y.plastic_strain[i],
+                        0.0,
+                        pseudo_0,
+                    );
                 };
                 let g = stage.shear_modulus[i];
                 // The rate of the intact stress S (damage scales it only where it acts).
@@ -886,13 +913,23 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
                 let st = self.strength_state(y, i, stage.pressure[i]);
                 let ret = sph_strength::radial_return(trial, model.yield_strength(&st));
                 let dep = ret.plastic_strain_increment(g).unwrap_or(0.0);
-                (ret.stress, y.plastic_strain[i] + dep, dep / dt)
+                // ds is zero where G = 0, so the pseudo-plastic strain only grows in a
+                // solid.
+                let pseudo_1 = if pseudo && g > 0.0 {
+                    pseudo_0 + ds * (dt / g)
+                } else {
+                    pseudo_0
+                };
+                (ret.stress, y.plastic_strain[i] + dep, dep / dt, pseudo_1)
             })
             .collect();
-        for (i, (s, ep, rate)) in updated.into_iter().enumerate() {
+        for (i, (s, ep, rate, e_pp)) in updated.into_iter().enumerate() {
             y.stress[i] = s;
             y.plastic_strain[i] = ep;
             y.plastic_strain_rate[i] = rate;
+            if pseudo {
+                y.pseudo_strain[i] = e_pp;
+            }
         }
     }
 

@@ -18,6 +18,11 @@ pub struct State<D: Dimension> {
     pub stress: Vec<sph_core::glam::DMat3>,
     /// Equivalent plastic strain; empty when no material has strength.
     pub plastic_strain: Vec<f64>,
+    /// Pseudo-plastic strain ε_pp = ∫ (dS/dt)_elastic / G dt as a 3×3, the strain that
+    /// activates flaws for a damage model with
+    /// [`sph_damage::ActivationStrain::PseudoPlastic`]; empty unless some material's
+    /// damage model asks for it.
+    pub pseudo_strain: Vec<sph_core::glam::DMat3>,
     /// Equivalent plastic strain rate (1/s) of the last step, for rate-dependent strength
     /// (Johnson–Cook); empty when no material has strength.
     pub plastic_strain_rate: Vec<f64>,
@@ -43,6 +48,7 @@ impl<D: Dimension> Default for State<D> {
             spacing0: Vec::new(),
             stress: Vec::new(),
             plastic_strain: Vec::new(),
+            pseudo_strain: Vec::new(),
             plastic_strain_rate: Vec::new(),
             damage_state: Vec::new(),
             damage_index: Vec::new(),
@@ -66,6 +72,7 @@ impl<D: Dimension> State<D> {
             spacing0: _,
             stress,
             plastic_strain,
+            pseudo_strain,
             plastic_strain_rate,
             damage_state,
             damage_index: _,
@@ -91,6 +98,7 @@ impl<D: Dimension> State<D> {
         self.h_tensor.clone_from(h_tensor);
         self.stress.clone_from(stress);
         self.plastic_strain.clone_from(plastic_strain);
+        self.pseudo_strain.clone_from(pseudo_strain);
         self.plastic_strain_rate.clone_from(plastic_strain_rate);
         self.damage_state.clone_from(damage_state);
         self.time = *time;
