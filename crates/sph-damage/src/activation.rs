@@ -31,13 +31,3 @@ pub enum ActivationStrain {
     /// over the shear modulus (Spheral's pseudo-plastic strain).
     PseudoPlastic,
 }
-
-impl ActivationStrain {
-    /// The name used in material files (`stress`, `pseudo-plastic`).
-    pub fn name(self) -> &'static str {
-        match self {
-            ActivationStrain::Stress => "stress",
-            ActivationStrain::PseudoPlastic => "pseudo-plastic",
-        }
-    }
-}

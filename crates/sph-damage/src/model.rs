@@ -61,7 +61,8 @@ pub struct DamageInput {
 }
 
 impl DamageInput {
-    /// Checks the input's ranges: finite σ_1 (and principal strain, if given); positive finite E, c_L, R_s; D ∈ [0, 1].
+    /// Checks the input's ranges: finite σ_1 (and principal strain, if given); positive
+    /// finite E, c_L, R_s; D ∈ [0, 1].
     /// The models' evaluations never panic on bad input (a NaN σ_1 gives a NaN rate), so
     /// a solver calls this where it validates its state, not in the hot loop.
     pub fn validate(&self, particle: usize) -> Result<(), DamageError> {

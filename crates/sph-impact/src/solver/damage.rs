@@ -76,6 +76,8 @@ pub(crate) fn damage_rates<D: Dimension>(
         return Vec::new();
     }
     let p = &state.particles;
+    // Per material, once per stage rather than per particle.
+    let pseudo: Vec<bool> = materials.iter().map(activates_on_pseudo_strain).collect();
     (0..p.len())
         .into_par_iter()
         .map(|i| {
@@ -109,14 +111,12 @@ pub(crate) fn damage_rates<D: Dimension>(
                     // λ_max of the pseudo-plastic strain (3×3: in RZ with the hoop
                     // entry) where the model activates on it; none is tracked in a
                     // run without strength, where it stays zero.
-                    principal_strain: (model.activation_strain()
-                        == sph_damage::ActivationStrain::PseudoPlastic)
-                        .then(|| {
-                            state
-                                .pseudo_strain
-                                .get(i)
-                                .map_or(0.0, sph_damage::max_principal_stress)
-                        }),
+                    principal_strain: pseudo[p.material[i] as usize].then(|| {
+                        state
+                            .pseudo_strain
+                            .get(i)
+                            .map_or(0.0, sph_damage::max_principal_stress)
+                    }),
                 },
             );
             DamageRate {
@@ -125,6 +125,15 @@ pub(crate) fn damage_rates<D: Dimension>(
             }
         })
         .collect()
+}
+
+/// True when the material's damage model activates its flaws on the pseudo-plastic
+/// strain, which the solver then tracks (sph_damage::activation).
+pub(crate) fn activates_on_pseudo_strain(material: &Material) -> bool {
+    material
+        .damage
+        .as_ref()
+        .is_some_and(|d| d.activation_strain() == sph_damage::ActivationStrain::PseudoPlastic)
 }
 
 /// Counts of what the damage bounds did over a run (nothing is clamped silently).

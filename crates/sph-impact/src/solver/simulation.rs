@@ -8,8 +8,8 @@ use crate::solver::axisymmetric::{
 use crate::solver::boundary::Boundary;
 use crate::solver::config::{DensityForm, EnergyForm, SchemeConfig, SmoothingMode};
 use crate::solver::damage::{
-    DamageEvents, DamageRate, DamageStageInput, advance_damage, damage_of, damage_rates,
-    damaged_pressure, fragment_densities,
+    DamageEvents, DamageRate, DamageStageInput, activates_on_pseudo_strain, advance_damage,
+    damage_of, damage_rates, damaged_pressure, fragment_densities,
 };
 use crate::solver::derivatives::{
     GradientSet, PairRates, Rates, gradients, rates, summation_density,
@@ -207,12 +207,7 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
         let (damage_state, damage_index) = damage_setup(&particles, &materials)?;
         // The pseudo-plastic strain only when a damage model activates on it (it needs
         // the deviatoric stress rate, so only with strength).
-        let pseudo_strain = if solid
-            && materials.iter().any(|m| {
-                m.damage.as_ref().is_some_and(|d| {
-                    d.activation_strain() == sph_damage::ActivationStrain::PseudoPlastic
-                })
-            }) {
+        let pseudo_strain = if solid && materials.iter().any(activates_on_pseudo_strain) {
             vec![sph_core::glam::DMat3::ZERO; n]
         } else {
             Vec::new()
