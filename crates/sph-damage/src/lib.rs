@@ -55,6 +55,7 @@
 pub mod activation;
 pub mod benz_asphaug;
 pub mod choice;
+pub mod coupling;
 pub mod elastic;
 pub mod error;
 pub mod flaw_tail;
@@ -67,6 +68,7 @@ pub mod weibull;
 pub use activation::ActivationStrain;
 pub use benz_asphaug::{BenzAsphaug, BenzAsphaugParams, CRACK_SPEED_FRACTION_BA94, GrowthLaw};
 pub use choice::BuiltinDamage;
+pub use coupling::{StressCoupling, pair_max_factor};
 pub use elastic::{longitudinal_wave_speed, poisson_ratio, youngs_modulus};
 pub use error::DamageError;
 pub use flaw_tail::FlawTail;

@@ -25,9 +25,13 @@ const MISSING: Glyph = [
 ];
 
 /// The glyph of `c`, or `None` when the font lacks it. U+2212 (minus sign) maps to
-/// the hyphen-minus glyph.
+/// the hyphen-minus glyph and U+00B5 (micro sign, as in "µs") to the Greek μ.
 pub fn glyph(c: char) -> Option<&'static Glyph> {
-    let c = if c == '\u{2212}' { '-' } else { c };
+    let c = match c {
+        '\u{2212}' => '-',
+        '\u{b5}' => 'μ',
+        c => c,
+    };
     let code = c as u32;
     if (32..=126).contains(&code) {
         return Some(&ASCII[(code - 32) as usize]);

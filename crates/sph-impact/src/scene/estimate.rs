@@ -10,6 +10,7 @@
 //! - **steps** = end time / first dt (the step shrinks when shocks compress and heat the
 //!   material, so this is a lower bound);
 //! - **runtime** = steps × 2 derivative evaluations (RK2) × particles / (rate × cores),
+//!   a lower bound like the steps it is made from,
 //!   with the rate [`ASSUMED_EVALUATIONS_PER_CORE_SOLID`] for 3-D scenes with strength and
 //!   [`ASSUMED_EVALUATIONS_PER_CORE_FLUID`] otherwise (docs/performance.md); for RZ
 //!   scenes those rates × [`RZ_RATE_FACTOR`], the 3-D neighbour count over the 2-D one;
@@ -235,7 +236,7 @@ impl CheckReport {
         );
         let _ = writeln!(
             s,
-            "runtime         ≈ {} on {} thread(s) (estimate: assumed {:.2e} derivative evaluations/s/core, 2 per RK2 step)",
+            "runtime         ≥ {} on {} thread(s) (from the steps' lower bound; assumed {:.2e} derivative evaluations/s/core, 2 per RK2 step)",
             human_seconds(self.runtime_s),
             self.threads,
             self.assumed_rate_per_core

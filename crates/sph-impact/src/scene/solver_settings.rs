@@ -4,6 +4,7 @@
 
 use crate::solver::{DensityForm, EnergyForm, MomentumForm, SchemeConfig, SmoothingMode};
 use serde::{Deserialize, Serialize};
+use sph_damage::StressCoupling;
 use sph_kernel::KernelChoice;
 use sph_riemann::{ArtificialStressForm, InterfaceCoupling, Limiter, RiemannSolver};
 
@@ -75,6 +76,9 @@ pub struct SolverSettings {
     /// Interface coupling b_ij: `study`, `fsisph`, `riemann`, `mean`.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub coupling: Option<InterfaceCoupling>,
+    /// Damage weakening of the pair's deviatoric stress: `particle`, `pair-max`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub stress_coupling: Option<StressCoupling>,
     /// Reconstruction limiter: `van-leer`, `minmod`, `none`.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub limiter: Option<Limiter>,
@@ -135,6 +139,7 @@ impl SolverSettings {
             viscosity_length_factor,
             riemann,
             coupling,
+            stress_coupling,
             limiter,
             energy,
             density,

@@ -1,6 +1,7 @@
 //! Scheme settings: everything about the numerical method that is not a material.
 
 use serde::{Deserialize, Serialize};
+use sph_damage::StressCoupling;
 use sph_kernel::KernelChoice;
 use sph_riemann::{ArtificialStress, InterfaceCoupling, Limiter, MonaghanViscosity, RiemannSolver};
 
@@ -117,6 +118,10 @@ pub struct SchemeConfig {
     pub riemann: RiemannSolver,
     /// Damage/material coupling b_ij in v*.
     pub coupling: InterfaceCoupling,
+    /// How damage weakens the deviatoric stress in the pair force of two particles of the
+    /// same material: each particle's own (1 − D) (the study's §2, default) or one factor
+    /// of the pair's damages (Spheral's pair-max coupling; [`StressCoupling`]).
+    pub stress_coupling: StressCoupling,
     /// Reconstruction of the normal velocity and pressure toward the pair midpoint.
     pub limiter: Limiter,
     /// Energy equation.
@@ -207,6 +212,7 @@ impl Default for SchemeConfig {
             },
             riemann: RiemannSolver::Acoustic,
             coupling: InterfaceCoupling::Study,
+            stress_coupling: StressCoupling::Particle,
             limiter: Limiter::VanLeer,
             energy: EnergyForm::Compatible,
             density: DensityForm::Mass,

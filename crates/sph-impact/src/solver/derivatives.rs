@@ -244,12 +244,14 @@ pub(crate) fn rates<D: Dimension, P: PairKernel<D>>(
             ext.sound_speed[i],
             ext.material[i],
         );
-        // Particle i's deviatoric stress in D dimensions (the in-plane block).
-        let si = if solid {
-            D::project(&ext.stress(i))
+        // Particle i's undamaged deviatoric stress in D dimensions (the in-plane block);
+        // each pair weakens it by its damage coupling.
+        let si_undamaged = if solid {
+            D::project(&ext.undamaged_stress(i))
         } else {
             D::Tensor::ZERO
         };
+        let di = if damaged { ext.damage[i] } else { 0.0 };
         let mut out = Rates::ZERO;
         let mut dv_boundary = D::Vector::ZERO;
         let mut hoop_gauge = 1.0;
@@ -280,6 +282,7 @@ pub(crate) fn rates<D: Dimension, P: PairKernel<D>>(
                 ext.sound_speed[j],
                 ext.mass[j],
             );
+            let dj = if damaged { ext.damage[j] } else { 0.0 };
             let vij = vi - vj;
             out.approach = out.approach.max(-vij.dot(r_hat));
 
@@ -330,8 +333,8 @@ pub(crate) fn rates<D: Dimension, P: PairKernel<D>>(
                     r_hat,
                     right,
                     left,
-                    damage_i: if damaged { ext.damage[i] } else { 0.0 },
-                    damage_j: if damaged { ext.damage[j] } else { 0.0 },
+                    damage_i: di,
+                    damage_j: dj,
                     same_material: mi_mat == ext.material[j],
                 },
                 scheme.riemann,
@@ -370,10 +373,17 @@ pub(crate) fn rates<D: Dimension, P: PairKernel<D>>(
             // Pair force per unit mass of i: m_j[(σ_i + σ_j)/(ρ_iρ_j) − Π]∇W + the
             // artificial stress, with σ = (1 − D) S − P_D I; symmetric in (i, j) up to
             // the antisymmetric ∇W.
-            let sj = if solid {
-                D::project(&ext.stress(j))
+            // The pair's deviatoric stresses, weakened by damage: each particle's own
+            // (1 − D) across a material interface, the scheme's coupling within a body.
+            let (si, sj) = if solid {
+                let (ai, aj) = if mi_mat == ext.material[j] {
+                    scheme.stress_coupling.factors(di, dj)
+                } else {
+                    (1.0 - di, 1.0 - dj)
+                };
+                (si_undamaged * ai, D::project(&ext.undamaged_stress(j)) * aj)
             } else {
-                D::Tensor::ZERO
+                (D::Tensor::ZERO, D::Tensor::ZERO)
             };
             let force = match momentum_corrections {
                 // σ_i (C_i∇W) + σ_j (C_j∇W), C = M⁻ᵀ (a ghost's is its source's, mapped

@@ -142,7 +142,8 @@ pub(crate) struct Extended<'a, D: Dimension> {
     /// strength): [`Self::stress`] applies the damage when it is read, so the pair passes
     /// hold no copy of it (72 bytes per particle in 3-D).
     real_stress: &'a [sph_core::glam::DMat3],
-    /// Ghosts only (index k − n_real): their damaged stress M (1 − D) S Mᵀ.
+    /// Ghosts only (index k − n_real): their undamaged stress M S Mᵀ (the damage is
+    /// applied when it is read, as for the real particles).
     ghost_stress: Vec<sph_core::glam::DMat3>,
     /// Damage D (empty without damage).
     pub damage: Vec<f64>,
@@ -167,11 +168,18 @@ impl<'a, D: Dimension> Extended<'a, D> {
     /// [`Self::has_stress`].
     #[inline]
     pub fn stress(&self, k: usize) -> sph_core::glam::DMat3 {
+        match self.damage.get(k) {
+            Some(d) => self.undamaged_stress(k) * (1.0 - d),
+            None => self.undamaged_stress(k),
+        }
+    }
+
+    /// The deviatoric stress S of particle k (real or ghost) before damage weakens it;
+    /// only when [`Self::has_stress`].
+    #[inline]
+    pub fn undamaged_stress(&self, k: usize) -> sph_core::glam::DMat3 {
         if k < self.n_real {
-            match self.damage.get(k) {
-                Some(d) => self.real_stress[k] * (1.0 - d),
-                None => self.real_stress[k],
-            }
+            self.real_stress[k]
         } else {
             self.ghost_stress[k - self.n_real]
         }
@@ -260,7 +268,7 @@ impl<'a, D: Dimension> Extended<'a, D> {
                             if D::DIM > 1 { 0.0 } else { 1.0 },
                             if D::DIM > 2 { 0.0 } else { 1.0 },
                         ));
-                    let sm = m * ext.stress(s) * m.transpose();
+                    let sm = m * ext.undamaged_stress(s) * m.transpose();
                     ext.ghost_stress.push(sm);
                 }
                 if !ext.damage.is_empty() {
