@@ -531,13 +531,15 @@ fn rings_rebound_whole_with_artificial_stress_and_tear_without() {
 #[test]
 #[ignore = "long: ~3 min in release"]
 fn taylor_bar_final_length_within_five_percent() {
+    // The default: the cubic lattice at 8 across with the study's artificial stress
+    // (measured L_f +4.1 %, R_f −0.1 %; the targets of 3 and 5 % are met by the rings
+    // placement at 12 across, `verify taylor --geometry rings --resolution 12`, ~45 min).
     let out = sph_impact::verify::Problem::Taylor.run(None).unwrap();
     let l = out.get("final_length_error_relative").unwrap();
-    println!(
-        "L_f error {l:+.4}, R_f error {:+.4}",
-        out.get("face_radius_error_relative").unwrap()
-    );
-    assert!(l.abs() < 0.05);
+    let r = out.get("face_radius_error_relative").unwrap();
+    println!("L_f error {l:+.4}, R_f error {r:+.4}");
+    assert!(l.abs() < 0.05, "{l}");
+    assert!(r.abs() < 0.05, "{r}");
 }
 
 #[test]

@@ -63,7 +63,7 @@ pub(crate) fn run(
     let body = match placement {
         RodPlacement::Lattice => cubic_lattice(&rod, dx, RHO),
         // A multiple of 4 points per ring: each quadrant holds a quarter of every ring.
-        RodPlacement::Rings => rz_lattice(&rod, dx, RHO).and_then(|rings| revolve(&rings, 4)),
+        RodPlacement::Rings => rod_rings(&rod, dx).and_then(|rings| revolve(&rings, 4)),
     }
     .map_err(|e| bad(e.to_string()))?;
     let mut p = Particles::<Dim3>::new();
@@ -117,6 +117,29 @@ pub(crate) fn run(
         [x.truncate().length(), x.z - anvil]
     })?;
     Ok(run.outcome())
+}
+
+/// The rod's (r, z) section as a square lattice of rings with `dx` across R0, its layers
+/// spread evenly over exactly L0: the lattice's nz = ⌈L0/Δx⌉ layers are stretched along z
+/// by L0/(nz Δx) (with their masses), so the rod is neither longer nor heavier than L0
+/// when L0/Δx is not a whole number (at 12 across the plain lattice held 122 layers of
+/// 0.267 mm, a rod 0.4 % long).
+fn rod_rings(
+    rod: &Cylinder,
+    dx: f64,
+) -> Result<sph_geometry::BodyParticles<DVec2>, sph_geometry::GeometryError> {
+    let mut rings = rz_lattice(rod, dx, RHO)?;
+    let nz = rings
+        .positions
+        .iter()
+        .filter(|x| x.x == rings.positions[0].x)
+        .count();
+    let stretch = LENGTH / (nz as f64 * dx);
+    for (x, m) in rings.positions.iter_mut().zip(rings.masses.iter_mut()) {
+        x.y = 0.5 * LENGTH + (x.y - 0.5 * LENGTH) * stretch;
+        *m *= stretch;
+    }
+    Ok(rings)
 }
 
 /// The end state of a rod run in (r, height above the anvil) and its KE history.
@@ -265,23 +288,24 @@ impl RodRun {
 /// wall below the rod, the axis handled by the solver.
 pub(crate) fn run_rz(n: usize, mut scheme: SchemeConfig) -> Result<Outcome, SolverError> {
     scheme.geometry = crate::Geometry::Axisymmetric;
+    let bad = |e: String| SolverError::Material(e);
     let (eos, strength) = copper()?;
     let dx = RADIUS / n as f64;
-    let nz = (LENGTH / dx).round() as usize;
+    let rod =
+        Cylinder::new(DVec3::ZERO, DVec3::Z, RADIUS, LENGTH).map_err(|e| bad(e.to_string()))?;
+    // The same rings as the 3-D run's `RodPlacement::Rings`.
+    let rings = rod_rings(&rod, dx).map_err(|e| bad(e.to_string()))?;
     let mut p = Particles::<Dim2>::new();
-    for a in 0..n {
-        for b in 0..nz {
-            let x = DVec2::new((a as f64 + 0.5) * dx, (b as f64 + 0.5) * dx);
-            p.push(ParticleInit {
-                position: x,
-                velocity: DVec2::new(0.0, -SPEED),
-                mass: RHO * dx * dx * x.x,
-                density: RHO,
-                specific_energy: 0.0,
-                smoothing_length: scheme.n_target * dx,
-                material: 0,
-            });
-        }
+    for (x, m) in rings.positions.iter().zip(&rings.masses) {
+        p.push(ParticleInit {
+            position: *x,
+            velocity: DVec2::new(0.0, -SPEED),
+            mass: *m,
+            density: RHO,
+            specific_energy: 0.0,
+            smoothing_length: scheme.n_target * dx,
+            material: 0,
+        });
     }
     let count = p.len();
     let sim = simulation(
