@@ -52,7 +52,7 @@ impl StressCoupling {
 #[inline]
 pub fn pair_max_factor(d_i: f64, d_j: f64) -> f64 {
     let (lo, hi) = if d_i <= d_j { (d_i, d_j) } else { (d_j, d_i) };
-    ((1.0 - hi) * (1.0 - lo) + lo).max(0.0)
+    (1.0 - hi) * (1.0 - lo) + lo
 }
 
 #[cfg(test)]

@@ -20,6 +20,7 @@ use crate::solver::pair_kernel::PairKernel;
 use crate::solver::state::Extended;
 use rayon::prelude::*;
 use sph_core::{Dimension, NeighborList, Tensor, Vector};
+use sph_damage::StressCoupling;
 use sph_riemann::{PairInterface, SideState, interface_velocity, reconstruct};
 
 /// Per-particle gradients (pass 1).
@@ -283,6 +284,7 @@ pub(crate) fn rates<D: Dimension, P: PairKernel<D>>(
                 ext.mass[j],
             );
             let dj = if damaged { ext.damage[j] } else { 0.0 };
+            let same_material = mi_mat == ext.material[j];
             let vij = vi - vj;
             out.approach = out.approach.max(-vij.dot(r_hat));
 
@@ -335,7 +337,7 @@ pub(crate) fn rates<D: Dimension, P: PairKernel<D>>(
                     left,
                     damage_i: di,
                     damage_j: dj,
-                    same_material: mi_mat == ext.material[j],
+                    same_material,
                 },
                 scheme.riemann,
                 scheme.coupling,
@@ -376,11 +378,12 @@ pub(crate) fn rates<D: Dimension, P: PairKernel<D>>(
             // The pair's deviatoric stresses, weakened by damage: each particle's own
             // (1 − D) across a material interface, the scheme's coupling within a body.
             let (si, sj) = if solid {
-                let (ai, aj) = if mi_mat == ext.material[j] {
-                    scheme.stress_coupling.factors(di, dj)
+                let coupling = if same_material {
+                    scheme.stress_coupling
                 } else {
-                    (1.0 - di, 1.0 - dj)
+                    StressCoupling::Particle
                 };
+                let (ai, aj) = coupling.factors(di, dj);
                 (si_undamaged * ai, D::project(&ext.undamaged_stress(j)) * aj)
             } else {
                 (D::Tensor::ZERO, D::Tensor::ZERO)
@@ -418,7 +421,7 @@ pub(crate) fn rates<D: Dimension, P: PairKernel<D>>(
             // whose force would pull i toward j does not interact at all (no force, and
             // no density or energy change, so the opening gap does not stretch either
             // body). The test is the same for (i, j) and (j, i).
-            if scheme.unbonded_interfaces && mi_mat != ext.material[j] && force.dot(r_hat) < 0.0 {
+            if scheme.unbonded_interfaces && !same_material && force.dot(r_hat) < 0.0 {
                 continue;
             }
             out.dv += force;

@@ -58,8 +58,7 @@ pub(crate) fn run(
     let bad = |e: String| SolverError::Material(e);
     let (eos, strength) = copper()?;
     let dx = RADIUS / n as f64;
-    let rod =
-        Cylinder::new(DVec3::ZERO, DVec3::Z, RADIUS, LENGTH).map_err(|e| bad(e.to_string()))?;
+    let rod = rod()?;
     let body = match placement {
         RodPlacement::Lattice => cubic_lattice(&rod, dx, RHO),
         // A multiple of 4 points per ring: each quadrant holds a quarter of every ring.
@@ -117,6 +116,12 @@ pub(crate) fn run(
         [x.truncate().length(), x.z - anvil]
     })?;
     Ok(run.outcome())
+}
+
+/// The undeformed rod: a cylinder of radius R0 and length L0 standing on z = 0.
+fn rod() -> Result<Cylinder, SolverError> {
+    Cylinder::new(DVec3::ZERO, DVec3::Z, RADIUS, LENGTH)
+        .map_err(|e| SolverError::Material(e.to_string()))
 }
 
 /// The rod's (r, z) section as a square lattice of rings with `dx` across R0, its layers
@@ -288,13 +293,10 @@ impl RodRun {
 /// wall below the rod, the axis handled by the solver.
 pub(crate) fn run_rz(n: usize, mut scheme: SchemeConfig) -> Result<Outcome, SolverError> {
     scheme.geometry = crate::Geometry::Axisymmetric;
-    let bad = |e: String| SolverError::Material(e);
     let (eos, strength) = copper()?;
     let dx = RADIUS / n as f64;
-    let rod =
-        Cylinder::new(DVec3::ZERO, DVec3::Z, RADIUS, LENGTH).map_err(|e| bad(e.to_string()))?;
     // The same rings as the 3-D run's `RodPlacement::Rings`.
-    let rings = rod_rings(&rod, dx).map_err(|e| bad(e.to_string()))?;
+    let rings = rod_rings(&rod()?, dx).map_err(|e| SolverError::Material(e.to_string()))?;
     let mut p = Particles::<Dim2>::new();
     for (x, m) in rings.positions.iter().zip(&rings.masses) {
         p.push(ParticleInit {
