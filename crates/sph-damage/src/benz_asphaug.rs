@@ -44,6 +44,7 @@ use crate::error::DamageError;
 use crate::flaw_tail::{FlawTail, Tail};
 use crate::model::{DamageBounds, DamageEval, DamageInput, DamageModel, DamageVariable};
 use crate::params::WeibullParams;
+use crate::tensor::DamageForm;
 use crate::weibull::FlawSet;
 use serde::{Deserialize, Serialize};
 
@@ -78,6 +79,7 @@ pub struct BenzAsphaugParams {
     variable: DamageVariable,
     tail: FlawTail,
     activation: ActivationStrain,
+    form: DamageForm,
 }
 
 #[derive(Deserialize)]
@@ -94,6 +96,8 @@ struct BenzAsphaugParamsUnchecked {
     tail: FlawTail,
     #[serde(default)]
     activation: ActivationStrain,
+    #[serde(default)]
+    form: DamageForm,
 }
 
 fn default_crack_speed_fraction() -> f64 {
@@ -110,6 +114,7 @@ impl TryFrom<BenzAsphaugParamsUnchecked> for BenzAsphaugParams {
                     .with_variable(raw.variable)
                     .with_tail(raw.tail)
                     .with_activation(raw.activation)
+                    .with_form(raw.form)
             })
     }
 }
@@ -117,7 +122,8 @@ impl TryFrom<BenzAsphaugParamsUnchecked> for BenzAsphaugParams {
 impl BenzAsphaugParams {
     /// Defaults: c_g = 0.4 c_L, [`GrowthLaw::PerActivatedFlaw`], the solver integrates
     /// D^(1/3) (3-D cracks), only the seeded flaws exist ([`FlawTail::Seeded`]), flaws
-    /// activate on the stress's strain ([`ActivationStrain::Stress`]).
+    /// activate on the stress's strain ([`ActivationStrain::Stress`]), scalar damage
+    /// ([`DamageForm::Scalar`]).
     pub fn new(weibull: WeibullParams, seed: u64) -> Self {
         BenzAsphaugParams {
             weibull,
@@ -127,6 +133,7 @@ impl BenzAsphaugParams {
             variable: DamageVariable::CubeRoot,
             tail: FlawTail::Seeded,
             activation: ActivationStrain::Stress,
+            form: DamageForm::Scalar,
         }
     }
 
@@ -168,6 +175,12 @@ impl BenzAsphaugParams {
         self
     }
 
+    /// Sets scalar or tensor damage ([`crate::tensor`]).
+    pub fn with_form(mut self, form: DamageForm) -> Self {
+        self.form = form;
+        self
+    }
+
     /// Weibull parameters.
     pub fn weibull(&self) -> WeibullParams {
         self.weibull
@@ -195,6 +208,10 @@ impl BenzAsphaugParams {
     /// The strain the flaws activate on.
     pub fn activation(&self) -> ActivationStrain {
         self.activation
+    }
+    /// Scalar or tensor damage.
+    pub fn form(&self) -> DamageForm {
+        self.form
     }
 }
 
@@ -308,6 +325,10 @@ impl DamageModel for BenzAsphaug {
 
     fn activation_strain(&self) -> ActivationStrain {
         self.params.activation
+    }
+
+    fn form(&self) -> DamageForm {
+        self.params.form
     }
 
     #[inline]

@@ -41,6 +41,9 @@ impl DamageModel for BuiltinDamage {
     fn activation_strain(&self) -> crate::ActivationStrain {
         dispatch!(self, m => m.activation_strain())
     }
+    fn form(&self) -> crate::DamageForm {
+        dispatch!(self, m => m.form())
+    }
     #[inline]
     fn evaluate(&self, particle: usize, input: &DamageInput) -> DamageEval {
         dispatch!(self, m => m.evaluate(particle, input))

@@ -1,6 +1,6 @@
 //! # sph-damage
 //!
-//! Scalar damage D ∈ [0, 1] of brittle solids (paper §3.3) behind the [`DamageModel`]
+//! Damage D ∈ [0, 1] of brittle solids, scalar or directional ([`tensor`]), (paper §3.3) behind the [`DamageModel`]
 //! trait: the maximum-tensile-stress model ([`MaxTensileStress`]), Benz–Asphaug
 //! Weibull flaws with crack growth ([`BenzAsphaug`], flaws in a [`FlawSet`] seeded
 //! reproducibly with rand_pcg, optionally continued past the strongest seeded flaw,
@@ -63,6 +63,7 @@ pub mod model;
 pub mod none;
 pub mod params;
 pub mod tensile;
+pub mod tensor;
 pub mod weibull;
 
 pub use activation::ActivationStrain;
@@ -79,4 +80,5 @@ pub use model::{
 pub use none::NoDamage;
 pub use params::{NamedWeibull, WeibullParams};
 pub use tensile::{MaxTensileStress, TensileFailure};
+pub use tensor::{DamageForm, DirectionalGrowth, GrowthOutcome};
 pub use weibull::{FlawSet, min_activation_strain, static_strength};

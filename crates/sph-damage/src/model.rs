@@ -277,6 +277,13 @@ pub trait DamageModel: Send + Sync + std::fmt::Debug {
         crate::ActivationStrain::Stress
     }
 
+    /// Whether D is one number per particle or a tensor grown along the principal strain
+    /// directions ([`crate::tensor`]); with [`crate::DamageForm::Tensor`] the solver
+    /// evaluates the model once per principal direction. Default: scalar.
+    fn form(&self) -> crate::DamageForm {
+        crate::DamageForm::Scalar
+    }
+
     /// Rate of s and the bounds on D for particle `particle` in state `input`.
     fn evaluate(&self, particle: usize, input: &DamageInput) -> DamageEval;
 

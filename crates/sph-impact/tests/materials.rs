@@ -195,35 +195,54 @@ fn non_default_options_round_trip() {
     );
 
     // The Grady–Kipp form of Benz–Asphaug damage (docs/verification.md, tensile bar).
-    let text = r#"
-name = "gk-basalt"
-base = "basalt-study"
-[damage]
-growth = "crack-volume"
-tail = "continuum"
-"#;
-    let gk = MaterialSpec::from_toml_str(text, "gk.toml").unwrap();
-    let DamageSpec::BenzAsphaug { growth, tail, .. } = gk.damage else {
-        panic!("{:?}", gk.damage)
+    let (spec, params) = benz_asphaug_option(
+        "growth = \"crack-volume\"\ntail = \"continuum\"\n",
+        "tail = \"continuum\"",
+    );
+    let DamageSpec::BenzAsphaug { growth, tail, .. } = spec else {
+        panic!("{spec:?}")
     };
     assert_eq!(
         (growth, tail),
         (GrowthLaw::CrackVolume, FlawTail::Continuum)
     );
-    let BuiltinDamage::BenzAsphaug(ba) = gk.damage.build(&[1e-9; 10], 1).unwrap() else {
-        panic!("not Benz–Asphaug")
-    };
-    assert_eq!(ba.params().tail(), FlawTail::Continuum);
-    let written = gk.to_toml().unwrap();
-    assert!(written.contains("tail = \"continuum\""), "{written}");
-    assert_eq!(
-        MaterialSpec::from_toml_str(&written, "gk.toml").unwrap(),
-        gk
+    assert_eq!(params.tail(), FlawTail::Continuum);
+
+    // Tensor damage on the pseudo-plastic strain (Spheral's probabilistic damage).
+    let (spec, params) = benz_asphaug_option(
+        "form = \"tensor\"\nstrain = \"pseudo-plastic\"\n",
+        "form = \"tensor\"",
     );
+    let DamageSpec::BenzAsphaug { form, .. } = spec else {
+        panic!("{spec:?}")
+    };
+    assert_eq!(form, sph_damage::DamageForm::Tensor);
+    assert_eq!(params.form(), sph_damage::DamageForm::Tensor);
 
     let gas = MaterialSpec::new("gas", 1.0, IdealGas::with_gamma(1.4).unwrap());
     let text = gas.to_toml().unwrap();
     assert_eq!(MaterialSpec::from_toml_str(&text, "gas.toml").unwrap(), gas);
+}
+
+/// basalt-study with `damage_keys` in its `[damage]`: the parsed damage, the parameters
+/// of the model it builds, and a check that the written TOML holds `written_has` and
+/// reads back to the same material.
+fn benz_asphaug_option(
+    damage_keys: &str,
+    written_has: &str,
+) -> (DamageSpec, sph_damage::BenzAsphaugParams) {
+    let text = format!("name = \"option\"\nbase = \"basalt-study\"\n[damage]\n{damage_keys}");
+    let m = MaterialSpec::from_toml_str(&text, "option.toml").unwrap();
+    let BuiltinDamage::BenzAsphaug(ba) = m.damage.build(&[1e-9; 10], 1).unwrap() else {
+        panic!("not Benz–Asphaug")
+    };
+    let written = m.to_toml().unwrap();
+    assert!(written.contains(written_has), "{written}");
+    assert_eq!(
+        MaterialSpec::from_toml_str(&written, "option.toml").unwrap(),
+        m
+    );
+    (m.damage, *ba.params())
 }
 
 #[test]
@@ -425,6 +444,9 @@ fn more_bad_input() {
     let e = error_of(&format!("{base}tail = \"long\"\n"));
     assert!(e.to_string().contains("continuum"), "{e}");
     assert_names(&e, "damage.tail", 4);
+    let e = error_of(&format!("{base}form = \"matrix\"\n"));
+    assert!(e.to_string().contains("tensor"), "{e}");
+    assert_names(&e, "damage.form", 4);
     // Temperature-dependent strength without thermal data.
     let e = error_of(
         "name = \"x\"\ndensity = 2785\nshear_modulus = 26.5e9\n[eos]\npreset = \"aluminium-study\"\n[strength]\npreset = \"aluminium-2024-jc\"\n",

@@ -7,12 +7,13 @@ use crate::materials::damage_spec::DamageSpec;
 use crate::materials::eos_choice::EosChoice;
 use crate::materials::error::{Location, MaterialError};
 use crate::materials::sections::{
-    ACTIVATION_STRAINS, FLAW_TAILS, GROWTH_LAWS, LUNDBORG_TENSIONS, Section, TENSILE_FAILURES,
-    Value,
+    ACTIVATION_STRAINS, DAMAGE_FORMS, FLAW_TAILS, GROWTH_LAWS, LUNDBORG_TENSIONS, Section,
+    TENSILE_FAILURES, Value,
 };
 use crate::materials::strength_choice::StrengthChoice;
 use sph_damage::{
-    ActivationStrain, CRACK_SPEED_FRACTION_BA94, DamageError, FlawTail, GrowthLaw, TensileFailure,
+    ActivationStrain, CRACK_SPEED_FRACTION_BA94, DamageError, DamageForm, FlawTail, GrowthLaw,
+    TensileFailure,
 };
 use sph_eos::{
     EosError, IdealGas, IdealGasParams, LinearElastic, LinearElasticParams, MieGruneisen,
@@ -115,7 +116,15 @@ pub(crate) const DAMAGE_MODELS: [(&str, &[&str]); 3] = [
     ),
     (
         "benz-asphaug",
-        &["k", "m", "crack_speed_fraction", "growth", "tail", "strain"],
+        &[
+            "k",
+            "m",
+            "crack_speed_fraction",
+            "growth",
+            "tail",
+            "strain",
+            "form",
+        ],
     ),
 ];
 
@@ -578,6 +587,9 @@ pub(crate) fn build_damage(sec: &Section, cx: &Cx) -> Result<DamageSpec, Materia
             strain: cx
                 .option(sec, "strain", &ACTIVATION_STRAINS)?
                 .unwrap_or(ActivationStrain::default()),
+            form: cx
+                .option(sec, "form", &DAMAGE_FORMS)?
+                .unwrap_or(DamageForm::default()),
         },
     };
     spec.validate().map_err(|e| cx.damage_error(sec, e))?;

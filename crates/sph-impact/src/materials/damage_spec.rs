@@ -5,8 +5,8 @@
 
 use sph_damage::{
     ActivationStrain, BenzAsphaug, BenzAsphaugParams, BuiltinDamage, CRACK_SPEED_FRACTION_BA94,
-    DamageError, DamageVariable, FlawTail, GrowthLaw, MaxTensileStress, NoDamage, TensileFailure,
-    WeibullParams,
+    DamageError, DamageForm, DamageVariable, FlawTail, GrowthLaw, MaxTensileStress, NoDamage,
+    TensileFailure, WeibullParams,
 };
 
 /// The damage model of a material (paper §3.3).
@@ -39,6 +39,8 @@ pub enum DamageSpec {
         tail: FlawTail,
         /// The strain the flaws activate on (sph_damage::activation).
         strain: ActivationStrain,
+        /// Scalar or tensor damage (sph_damage::tensor).
+        form: DamageForm,
     },
 }
 
@@ -54,7 +56,8 @@ impl DamageSpec {
 
     /// Benz–Asphaug with Weibull k (m⁻³) and m, crack speed 0.4 c_L, the default growth
     /// law ([`GrowthLaw::PerActivatedFlaw`]), only the seeded flaws
-    /// ([`FlawTail::Seeded`]) and activation on the stress ([`ActivationStrain::Stress`]).
+    /// ([`FlawTail::Seeded`]), activation on the stress ([`ActivationStrain::Stress`]) and
+    /// scalar damage ([`DamageForm::Scalar`]).
     pub fn benz_asphaug(k: f64, m: f64) -> Self {
         Self::BenzAsphaug {
             k,
@@ -63,6 +66,7 @@ impl DamageSpec {
             growth: GrowthLaw::default(),
             tail: FlawTail::default(),
             strain: ActivationStrain::default(),
+            form: DamageForm::default(),
         }
     }
 
@@ -163,13 +167,15 @@ impl DamageSpec {
                 growth,
                 tail,
                 strain,
+                form,
             } => {
                 let params = BenzAsphaugParams::new(WeibullParams::new(k, m)?, seed)
                     .with_crack_speed_fraction(crack_speed_fraction)?
                     .with_growth(growth)
                     .with_variable(variable)
                     .with_tail(tail)
-                    .with_activation(strain);
+                    .with_activation(strain)
+                    .with_form(form);
                 Ok(BuiltinDamage::BenzAsphaug(
                     BenzAsphaug::seed_with_volumes_dealt(params, particle_volumes, dealt_over)?,
                 ))

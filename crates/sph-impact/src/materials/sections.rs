@@ -5,7 +5,7 @@
 use crate::materials::damage_spec::DamageSpec;
 use crate::materials::eos_choice::EosChoice;
 use crate::materials::strength_choice::StrengthChoice;
-use sph_damage::{ActivationStrain, FlawTail, GrowthLaw, TensileFailure};
+use sph_damage::{ActivationStrain, DamageForm, FlawTail, GrowthLaw, TensileFailure};
 use sph_eos::{DEFAULT_SOUND_SPEED_FLOOR_FRACTION, ThermalModel};
 use sph_strength::{BuiltinStrength, LundborgTension};
 use std::ops::Range;
@@ -98,6 +98,12 @@ pub(crate) const FLAW_TAILS: [(&str, FlawTail); 2] = [
 pub(crate) const ACTIVATION_STRAINS: [(&str, ActivationStrain); 2] = [
     ("stress", ActivationStrain::Stress),
     ("pseudo-plastic", ActivationStrain::PseudoPlastic),
+];
+
+/// Names of [`DamageForm`] in material files (`[damage] form`).
+pub(crate) const DAMAGE_FORMS: [(&str, DamageForm); 2] = [
+    ("scalar", DamageForm::Scalar),
+    ("tensor", DamageForm::Tensor),
 ];
 
 /// Names of [`LundborgTension`] in material files.
@@ -266,13 +272,15 @@ pub(crate) fn damage_section(damage: &DamageSpec) -> Section {
             growth,
             tail,
             strain,
+            form,
         } => Section::new(Some("benz-asphaug"))
             .num("k", k)
             .num("m", m)
             .num("crack_speed_fraction", crack_speed_fraction)
             .name("growth", name_of(&GROWTH_LAWS, growth))
             .name("tail", name_of(&FLAW_TAILS, tail))
-            .name("strain", name_of(&ACTIVATION_STRAINS, strain)),
+            .name("strain", name_of(&ACTIVATION_STRAINS, strain))
+            .name("form", name_of(&DAMAGE_FORMS, form)),
     }
 }
 

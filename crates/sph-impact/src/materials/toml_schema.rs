@@ -142,6 +142,7 @@ section_table!(
         growth => "growth",
         tail => "tail",
         strain => "strain",
+        form => "form",
     }
 );
 

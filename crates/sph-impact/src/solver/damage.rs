@@ -11,7 +11,9 @@ use crate::solver::material::Material;
 use crate::solver::state::State;
 use rayon::prelude::*;
 use sph_core::Dimension;
-use sph_damage::{BoundAction, DamageBounds, DamageInput, apply_bounds};
+use sph_core::glam::{DMat3, DVec3};
+use sph_damage::tensor::{DirectionalGrowth, grow, largest_damage, principal_strains};
+use sph_damage::{BoundAction, DamageBounds, DamageForm, DamageInput, apply_bounds};
 
 /// P_D = (1 − D) P in tension (P < 0), P in compression (paper §2).
 #[inline]
@@ -63,6 +65,53 @@ pub(crate) struct DamageStageInput<'a> {
     pub damage: &'a [f64],
     /// Particle spacing Δx (crack-growth radius).
     pub spacing: &'a [f64],
+    /// The spin Ω = ½ (L − Lᵀ) of each particle (3×3), for tensor damage only (empty
+    /// otherwise).
+    pub spin: &'a [DMat3],
+}
+
+/// A tensor-damage particle's growth along its principal strain directions, largest
+/// first, and its spin, from one stage (sph_damage::tensor).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct TensorRate {
+    pub growth: [DirectionalGrowth; 3],
+    pub spin: DMat3,
+}
+
+impl TensorRate {
+    /// No growth, no rotation (particles of scalar materials).
+    const NONE: TensorRate = TensorRate {
+        growth: [
+            DirectionalGrowth::none(DVec3::X),
+            DirectionalGrowth::none(DVec3::Y),
+            DirectionalGrowth::none(DVec3::Z),
+        ],
+        spin: DMat3::ZERO,
+    };
+}
+
+/// True when the material's damage is a tensor (sph_damage::tensor).
+pub(crate) fn has_tensor_damage(material: &Material) -> bool {
+    material
+        .damage
+        .as_ref()
+        .is_some_and(|d| d.form() == DamageForm::Tensor)
+}
+
+/// E and c_L of particle i from the EOS's bulk modulus K = ρ c² and the shear modulus G.
+fn elastic_moduli<D: Dimension>(
+    state: &State<D>,
+    input: &DamageStageInput<'_>,
+    i: usize,
+) -> (f64, f64) {
+    let rho = state.particles.density[i];
+    let c = input.sound_speed[i];
+    let g = input.shear_modulus[i];
+    let k = rho * c * c;
+    (
+        sph_damage::youngs_modulus(k, g),
+        sph_damage::longitudinal_wave_speed(k, g, rho),
+    )
 }
 
 /// ds/dt and bounds of every particle (rate 0 and bounds [D, D] for particles without a
@@ -82,12 +131,17 @@ pub(crate) fn damage_rates<D: Dimension>(
         .into_par_iter()
         .map(|i| {
             let d = input.damage[i];
-            let Some(model) = &materials[p.material[i] as usize].damage else {
-                return DamageRate {
-                    rate: 0.0,
-                    bounds: DamageBounds { min: d, max: d },
-                };
+            let still = DamageRate {
+                rate: 0.0,
+                bounds: DamageBounds { min: d, max: d },
             };
+            let Some(model) = &materials[p.material[i] as usize].damage else {
+                return still;
+            };
+            if model.form() == DamageForm::Tensor {
+                // Grown by tensor_damage_rates.
+                return still;
+            }
             // σ_1 of the total stress σ = (1 − D) S − P_D I, tension positive; the stored
             // 3×3 includes the out-of-plane components of 1-D and 2-D runs.
             let sigma = input.stress[i] * (1.0 - d)
@@ -95,17 +149,14 @@ pub(crate) fn damage_rates<D: Dimension>(
                     input.pressure[i],
                 ));
             let sigma_1 = sph_damage::max_principal_stress(&sigma);
-            let rho = p.density[i];
-            let c = input.sound_speed[i];
-            let g = input.shear_modulus[i];
             // K = ρ c² (the EOS's isentropic bulk modulus), E = 9KG/(3K + G).
-            let k = rho * c * c;
+            let (e, c_l) = elastic_moduli(state, input, i);
             let eval = model.evaluate(
                 state.damage_index[i] as usize,
                 &DamageInput {
                     max_principal_stress: sigma_1,
-                    youngs_modulus: sph_damage::youngs_modulus(k, g),
-                    longitudinal_wave_speed: sph_damage::longitudinal_wave_speed(k, g, rho),
+                    youngs_modulus: e,
+                    longitudinal_wave_speed: c_l,
                     particle_size: input.spacing[i],
                     damage: d,
                     // λ_max of the pseudo-plastic strain (3×3: in RZ with the hoop
@@ -122,6 +173,71 @@ pub(crate) fn damage_rates<D: Dimension>(
             DamageRate {
                 rate: eval.rate,
                 bounds: eval.bounds,
+            }
+        })
+        .collect()
+}
+
+/// The tensor-damage growth of every particle (sph_damage::tensor; [`TensorRate::NONE`]
+/// for particles of scalar materials); empty when no material's damage is a tensor.
+///
+/// The activation strain tensor is the pseudo-plastic strain where the model activates
+/// on it, else the stress's, (S − P_D I)/E with the intact deviatoric stress (as
+/// Spheral's Benz–Asphaug strain). Along each principal direction n_j with λ_j > 0 the
+/// model is evaluated at the damage across it, D_0 = |**D** n_j|, so its local strain
+/// is λ_j/(1 − D_0).
+pub(crate) fn tensor_damage_rates<D: Dimension>(
+    state: &State<D>,
+    materials: &[Material],
+    input: &DamageStageInput<'_>,
+) -> Vec<TensorRate> {
+    if state.damage_tensor.is_empty() {
+        return Vec::new();
+    }
+    let p = &state.particles;
+    (0..p.len())
+        .into_par_iter()
+        .map(|i| {
+            let Some(model) = &materials[p.material[i] as usize].damage else {
+                return TensorRate::NONE;
+            };
+            if model.form() != DamageForm::Tensor {
+                return TensorRate::NONE;
+            }
+            let (e, c_l) = elastic_moduli(state, input, i);
+            let pseudo = model.activation_strain() == sph_damage::ActivationStrain::PseudoPlastic;
+            let strain = if pseudo {
+                state.pseudo_strain.get(i).copied().unwrap_or(DMat3::ZERO)
+            } else {
+                (input.stress[i] - DMat3::from_diagonal(DVec3::splat(input.pressure[i])))
+                    * (1.0 / e)
+            };
+            let d = state.damage_tensor[i];
+            let growth = principal_strains(&strain).map(|(lambda, n)| {
+                if !(lambda > 0.0) {
+                    return DirectionalGrowth::none(n);
+                }
+                let d0 = sph_damage::tensor::projected_damage(&d, n);
+                let eval = model.evaluate(
+                    state.damage_index[i] as usize,
+                    &DamageInput {
+                        max_principal_stress: lambda * e,
+                        youngs_modulus: e,
+                        longitudinal_wave_speed: c_l,
+                        particle_size: input.spacing[i],
+                        damage: d0,
+                        principal_strain: Some(lambda),
+                    },
+                );
+                DirectionalGrowth {
+                    direction: n,
+                    rate: eval.rate,
+                    cap: eval.bounds.max,
+                }
+            });
+            TensorRate {
+                growth,
+                spin: input.spin.get(i).copied().unwrap_or(DMat3::ZERO),
             }
         })
         .collect()
@@ -146,6 +262,9 @@ pub struct DamageEvents {
     /// Particles set to D = 1 because their density fell below
     /// `SchemeConfig::fragment_density_ratio` × ρ0 (each particle once: D = 1 stays).
     pub fragmented: u64,
+    /// Tensor-damage updates whose eigenvalues had to be brought back into [0, 1]
+    /// (growth along a direction oblique to earlier damage, or the rotation's round-off).
+    pub tensor_rebounded: u64,
 }
 
 impl DamageEvents {
@@ -154,6 +273,7 @@ impl DamageEvents {
         self.raised_to_min += other.raised_to_min;
         self.capped_at_max += other.capped_at_max;
         self.fragmented += other.fragmented;
+        self.tensor_rebounded += other.tensor_rebounded;
     }
 }
 
@@ -172,37 +292,71 @@ pub(crate) fn fragment_densities(materials: &[Material], ratio: f64) -> Vec<Opti
 
 /// s ← s0 + dt ds/dt, then the bounds; a particle whose density is below its material's
 /// entry of `fragment_below` (from [`fragment_densities`]) is set to D = 1 instead.
-/// Returns the counts of bound actions and of new fragmentations. A non-finite state is
-/// left for the solver's state check to report.
+/// Tensor-damage particles start from their tensor of `t0` instead: it turns with the
+/// stage's spin, **D** += dt (Ω **D** − **D** Ω), grows along the stage's directions
+/// (sph_damage::tensor::grow) and its largest eigenvalue sets s; fragmentation makes it
+/// I. Returns the counts of bound actions and of new fragmentations. A non-finite state
+/// is left for the solver's state check to report.
+#[allow(clippy::too_many_arguments)]
 pub(crate) fn advance_damage<D: Dimension>(
     y: &mut State<D>,
     s0: &[f64],
+    t0: &[DMat3],
     materials: &[Material],
     fragment_below: &[Option<f64>],
     rates: &[DamageRate],
+    tensor_rates: &[TensorRate],
     dt: f64,
 ) -> DamageEvents {
     let p = &y.particles;
-    let out: Vec<(f64, BoundAction, bool)> = (0..p.len())
+    let tensor_form: Vec<bool> = materials.iter().map(has_tensor_damage).collect();
+    type Advanced = (f64, BoundAction, bool, Option<(DMat3, bool)>);
+    let out: Vec<Advanced> = (0..p.len())
         .into_par_iter()
         .map(|i| {
             let m = p.material[i] as usize;
             let Some(model) = &materials[m].damage else {
-                return (s0[i], BoundAction::Within, false);
+                return (s0[i], BoundAction::Within, false, None);
             };
             let variable = model.variable();
-            if fragment_below[m].is_some_and(|rho_f| p.density[i] < rho_f) {
+            let fragment = fragment_below[m].is_some_and(|rho_f| p.density[i] < rho_f);
+            if tensor_form[m] {
+                if fragment {
+                    let whole = variable.from_damage(1.0);
+                    return (
+                        whole,
+                        BoundAction::Within,
+                        t0[i] != DMat3::IDENTITY,
+                        Some((DMat3::IDENTITY, false)),
+                    );
+                }
+                let tr = &tensor_rates[i];
+                let turned = t0[i] + sph_strength::rotation_terms(&t0[i], &tr.spin) * dt;
+                let (d, outcome) = grow(turned, &tr.growth, variable, dt);
+                let action = if outcome.capped > 0 {
+                    BoundAction::CappedAtMax
+                } else {
+                    BoundAction::Within
+                };
+                let s = variable.from_damage(largest_damage(&d));
+                return (s, action, false, Some((d, outcome.rebounded)));
+            }
+            if fragment {
                 let whole = variable.from_damage(1.0);
-                return (whole, BoundAction::Within, s0[i] != whole);
+                return (whole, BoundAction::Within, s0[i] != whole, None);
             }
             let s = s0[i] + dt * rates[i].rate;
             let b = apply_bounds(variable, s, rates[i].bounds);
-            (b.state, b.action, false)
+            (b.state, b.action, false, None)
         })
         .collect();
     let mut events = DamageEvents::default();
-    for (i, (s, action, fragmented)) in out.into_iter().enumerate() {
+    for (i, (s, action, fragmented, tensor)) in out.into_iter().enumerate() {
         y.damage_state[i] = s;
+        if let Some((d, rebounded)) = tensor {
+            y.damage_tensor[i] = d;
+            events.tensor_rebounded += u64::from(rebounded);
+        }
         match action {
             BoundAction::RaisedToMin => events.raised_to_min += 1,
             BoundAction::CappedAtMax => events.capped_at_max += 1,
@@ -265,6 +419,7 @@ mod tests {
             pseudo_strain: Vec::new(),
             plastic_strain_rate: Vec::new(),
             damage_state: vec![0.3, 0.3, 0.0],
+            damage_tensor: Vec::new(),
             damage_index: vec![0, 1, 0],
             time: 0.0,
             step: 0,
@@ -283,18 +438,18 @@ mod tests {
         let below = fragment_densities(&materials, 0.5);
         assert_eq!(below, vec![Some(1350.0), None]);
         let s0 = y.damage_state.clone();
-        let ev = advance_damage(&mut y, &s0, &materials, &below, &rates, 1e-9);
+        let ev = advance_damage(&mut y, &s0, &[], &materials, &below, &rates, &[], 1e-9);
         // ρ0: untouched; 0.4 ρ0: D = 1; the undamageable 0.1 ρ0 particle: untouched.
         assert_eq!(y.damage_state, vec![0.3, 1.0, 0.0]);
         assert_eq!(ev.fragmented, 1);
         let s1 = y.damage_state.clone();
-        let again = advance_damage(&mut y, &s1, &materials, &below, &rates, 1e-9);
+        let again = advance_damage(&mut y, &s1, &[], &materials, &below, &rates, &[], 1e-9);
         assert_eq!((again.fragmented, y.damage_state[1]), (0, 1.0));
         // Ratio 0 disables the rule.
         let (mut y, materials) = expanded_rock();
         let off = fragment_densities(&materials, 0.0);
         let s0 = y.damage_state.clone();
-        let ev = advance_damage(&mut y, &s0, &materials, &off, &rates, 1e-9);
+        let ev = advance_damage(&mut y, &s0, &[], &materials, &off, &rates, &[], 1e-9);
         assert_eq!((ev.fragmented, y.damage_state[1]), (0, 0.3));
     }
 }

@@ -21,6 +21,7 @@ use crate::solver::state::Extended;
 use rayon::prelude::*;
 use sph_core::{Dimension, NeighborList, Tensor, Vector};
 use sph_damage::StressCoupling;
+use sph_damage::tensor::projected_damage;
 use sph_riemann::{PairInterface, SideState, interface_velocity, reconstruct};
 
 /// Per-particle gradients (pass 1).
@@ -383,7 +384,18 @@ pub(crate) fn rates<D: Dimension, P: PairKernel<D>>(
                 } else {
                     StressCoupling::Particle
                 };
-                let (ai, aj) = coupling.factors(di, dj);
+                // Tensor damage: each particle's damage across the pair's direction
+                // (sph_damage::tensor); a scalar damage projects to itself.
+                let (ci, cj) = if ext.damage_tensor.is_empty() {
+                    (di, dj)
+                } else {
+                    let n = sph_core::glam::DVec3::from_array(r_hat.to_array3());
+                    (
+                        projected_damage(&ext.damage_tensor[i], n),
+                        projected_damage(&ext.damage_tensor[j], n),
+                    )
+                };
+                let (ai, aj) = coupling.factors(ci, cj);
                 (si_undamaged * ai, D::project(&ext.undamaged_stress(j)) * aj)
             } else {
                 (D::Tensor::ZERO, D::Tensor::ZERO)

@@ -8,8 +8,9 @@ use crate::solver::axisymmetric::{
 use crate::solver::boundary::Boundary;
 use crate::solver::config::{DensityForm, EnergyForm, SchemeConfig, SmoothingMode};
 use crate::solver::damage::{
-    DamageEvents, DamageRate, DamageStageInput, activates_on_pseudo_strain, advance_damage,
-    damage_of, damage_rates, damaged_pressure, fragment_densities,
+    DamageEvents, DamageRate, DamageStageInput, TensorRate, activates_on_pseudo_strain,
+    advance_damage, damage_of, damage_rates, damaged_pressure, fragment_densities,
+    has_tensor_damage, tensor_damage_rates,
 };
 use crate::solver::derivatives::{
     GradientSet, PairRates, Rates, gradients, rates, summation_density,
@@ -95,6 +96,8 @@ struct Stage<D: Dimension> {
     shear_modulus: Vec<f64>,
     /// Damage rates and bounds (empty without damage).
     damage_rates: Vec<DamageRate>,
+    /// Tensor-damage growth (empty unless some material's damage is a tensor).
+    tensor_rates: Vec<TensorRate>,
 }
 
 /// A running simulation.
@@ -212,6 +215,11 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
         } else {
             Vec::new()
         };
+        let damage_tensor = if materials.iter().any(has_tensor_damage) {
+            vec![sph_core::glam::DMat3::ZERO; n]
+        } else {
+            Vec::new()
+        };
         let rz = scheme.geometry == Geometry::Axisymmetric;
         let radius0 = if rz {
             particles.position.iter().map(|x| radius(*x)).collect()
@@ -228,6 +236,7 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
                 plastic_strain,
                 pseudo_strain,
                 damage_state,
+                damage_tensor,
                 damage_index,
                 time: 0.0,
                 step: 0,
@@ -361,6 +370,20 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
         let n_real = ext.n_real;
         // D of the real particles (empty without damage).
         let n_damage = ext.damage.len().min(n_real);
+        if !state.damage_tensor.is_empty() {
+            // The pairs project each particle's damage tensor on their direction; a
+            // scalar material's D enters as D I.
+            let tensors = (0..n_real)
+                .map(|i| {
+                    if has_tensor_damage(&self.materials[state.particles.material[i] as usize]) {
+                        state.damage_tensor[i]
+                    } else {
+                        sph_core::glam::DMat3::IDENTITY * ext.damage[i]
+                    }
+                })
+                .collect();
+            ext.set_damage_tensor(tensors);
+        }
         let rz = self.scheme.geometry == Geometry::Axisymmetric;
         if rz {
             ext.radius = ext.position.iter().map(|x| radius(*x)).collect();
@@ -472,11 +495,25 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
             hoop_gauge,
         } = rates_out;
         if rz {
+            // The hoop stress is weakened by the damage across the hoop direction: D for
+            // a scalar damage, D_θθ of a tensor (θ is a principal direction in RZ).
+            let hoop_damage: Vec<f64> = if ext.damage_tensor.is_empty() {
+                Vec::new()
+            } else {
+                ext.damage_tensor[..n_real]
+                    .iter()
+                    .map(|d| d.z_axis.z.clamp(0.0, 1.0))
+                    .collect()
+            };
             add_hoop_terms(
                 &HoopInput {
                     particles: &state.particles,
                     stress: &state.stress,
-                    damage: &ext.damage[..n_damage],
+                    damage: if hoop_damage.is_empty() {
+                        &ext.damage[..n_damage]
+                    } else {
+                        &hoop_damage
+                    },
                     pressure: &ext.pressure[..n_real],
                     energy: self.scheme.energy,
                     smoothed_radius: self.smoothed_radius.as_ref().expect("RZ has the table"),
@@ -493,18 +530,27 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
                 .map(|i| self.spacing(state, i))
                 .collect()
         };
-        let damage_rates = damage_rates(
-            state,
-            &self.materials,
-            &DamageStageInput {
-                stress: &state.stress,
-                pressure: &ext.pressure[..n_real],
-                sound_speed: &sound_speed,
-                shear_modulus: &shear_modulus,
-                damage: &ext.damage[..n_damage],
-                spacing: &spacing,
-            },
-        );
+        // Tensor damage turns with the particle's spin Ω = ½ (L − Lᵀ).
+        let spin: Vec<sph_core::glam::DMat3> = match &grads {
+            Some(gr) if !state.damage_tensor.is_empty() => gr
+                .each
+                .iter()
+                .take(n_real)
+                .map(|g| sph_strength::spin(&D::embed(&g.strain_velocity)))
+                .collect(),
+            _ => Vec::new(),
+        };
+        let damage_input = DamageStageInput {
+            stress: &state.stress,
+            pressure: &ext.pressure[..n_real],
+            sound_speed: &sound_speed,
+            shear_modulus: &shear_modulus,
+            damage: &ext.damage[..n_damage],
+            spacing: &spacing,
+            spin: &spin,
+        };
+        let damage_rates = damage_rates(state, &self.materials, &damage_input);
+        let tensor_rates = tensor_damage_rates(state, &self.materials, &damage_input);
         let t4 = Instant::now();
         self.timings.eos += (t1 - t0).as_secs_f64();
         self.timings.neighbours += (t2 - t1).as_secs_f64();
@@ -522,6 +568,7 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
                 pressure: pressure_d,
                 shear_modulus,
                 damage_rates,
+                tensor_rates,
             },
             list,
         ))
@@ -591,9 +638,11 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
             advance_damage(
                 &mut half,
                 &s0_state.damage_state,
+                &s0_state.damage_tensor,
                 &self.materials,
                 &fragment_below,
                 &s0.damage_rates,
+                &s0.tensor_rates,
                 0.5 * dt,
             );
         }
@@ -615,12 +664,15 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
         self.density_floor_events += self.floor_density(&mut next);
         if !next.damage_state.is_empty() {
             let s_start = next.damage_state.clone();
+            let t_start = next.damage_tensor.clone();
             let ev = advance_damage(
                 &mut next,
                 &s_start,
+                &t_start,
                 &self.materials,
                 &fragment_below,
                 &s1.damage_rates,
+                &s1.tensor_rates,
                 dt,
             );
             self.damage_events.add(ev);

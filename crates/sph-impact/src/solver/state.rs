@@ -29,6 +29,11 @@ pub struct State<D: Dimension> {
     /// The damage model's integrated variable s = D^(1/p) (paper §3.3; sph-damage's
     /// [`sph_damage::DamageVariable`]), per particle; empty when no material has damage.
     pub damage_state: Vec<f64>,
+    /// The damage tensor **D** (3×3, the out-of-plane or hoop direction included) of the
+    /// particles of tensor-damage materials (sph_damage::tensor); zero for the others,
+    /// whose D is their [`Self::damage_state`]. Empty unless some material's damage is a
+    /// tensor. For those particles `damage_state` holds s of **D**'s largest eigenvalue.
+    pub damage_tensor: Vec<sph_core::glam::DMat3>,
     /// Each particle's index in its material's damage model (its flaws), fixed at set-up;
     /// empty when no material has damage.
     pub damage_index: Vec<u32>,
@@ -51,6 +56,7 @@ impl<D: Dimension> Default for State<D> {
             pseudo_strain: Vec::new(),
             plastic_strain_rate: Vec::new(),
             damage_state: Vec::new(),
+            damage_tensor: Vec::new(),
             damage_index: Vec::new(),
             time: 0.0,
             step: 0,
@@ -75,6 +81,7 @@ impl<D: Dimension> State<D> {
             pseudo_strain,
             plastic_strain_rate,
             damage_state,
+            damage_tensor,
             damage_index: _,
             time,
             step,
@@ -101,6 +108,7 @@ impl<D: Dimension> State<D> {
         self.pseudo_strain.clone_from(pseudo_strain);
         self.plastic_strain_rate.clone_from(plastic_strain_rate);
         self.damage_state.clone_from(damage_state);
+        self.damage_tensor.clone_from(damage_tensor);
         self.time = *time;
         self.step = *step;
     }
@@ -147,6 +155,10 @@ pub(crate) struct Extended<'a, D: Dimension> {
     ghost_stress: Vec<sph_core::glam::DMat3>,
     /// Damage D (empty without damage).
     pub damage: Vec<f64>,
+    /// The damage tensor of every particle, real and ghost (a scalar damage D as D I),
+    /// for the pairs' projected coupling; empty unless some material's damage is a
+    /// tensor ([`Self::set_damage_tensor`]).
+    pub damage_tensor: Vec<sph_core::glam::DMat3>,
     /// Artificial-stress tensor R (empty when the artificial stress is off).
     pub astress: Vec<D::Tensor>,
     /// RZ only: each particle's radius r = |x| (ghosts mirrored across the axis keep their
@@ -229,6 +241,7 @@ impl<'a, D: Dimension> Extended<'a, D> {
             real_stress: stress,
             ghost_stress: Vec::new(),
             damage,
+            damage_tensor: Vec::new(),
             astress: Vec::new(),
             radius: Vec::new(),
             smoothed_radius: Vec::new(),
@@ -262,12 +275,7 @@ impl<'a, D: Dimension> Extended<'a, D> {
                 ext.ghost_map.push(composed);
                 if ext.has_stress() {
                     // A stress maps as a tensor: S' = M S Mᵀ with M the reflection in 3-D.
-                    let m = D::embed(&g.map)
-                        + sph_core::glam::DMat3::from_diagonal(sph_core::glam::DVec3::new(
-                            if D::DIM > 0 { 0.0 } else { 1.0 },
-                            if D::DIM > 1 { 0.0 } else { 1.0 },
-                            if D::DIM > 2 { 0.0 } else { 1.0 },
-                        ));
+                    let m = embed_map::<D>(&g.map);
                     let sm = m * ext.undamaged_stress(s) * m.transpose();
                     ext.ghost_stress.push(sm);
                 }
@@ -279,4 +287,30 @@ impl<'a, D: Dimension> Extended<'a, D> {
         }
         ext
     }
+}
+
+impl<D: Dimension> Extended<'_, D> {
+    /// Sets the damage tensors of the real particles and maps them onto the ghosts like
+    /// the stress (**D**' = M **D** Mᵀ).
+    pub fn set_damage_tensor(&mut self, mut real: Vec<sph_core::glam::DMat3>) {
+        debug_assert_eq!(real.len(), self.n_real);
+        real.reserve(self.position.len() - self.n_real);
+        for k in self.n_real..self.position.len() {
+            let m = embed_map::<D>(&self.ghost_map[k - self.n_real]);
+            let src = self.source[k] as usize;
+            real.push(m * real[src] * m.transpose());
+        }
+        self.damage_tensor = real;
+    }
+}
+
+/// An orthogonal map of D dimensions as a 3×3 that leaves the components beyond D alone
+/// (the out-of-plane or hoop direction of 1-D and 2-D runs).
+fn embed_map<D: Dimension>(map: &D::Tensor) -> sph_core::glam::DMat3 {
+    D::embed(map)
+        + sph_core::glam::DMat3::from_diagonal(sph_core::glam::DVec3::new(
+            if D::DIM > 0 { 0.0 } else { 1.0 },
+            if D::DIM > 1 { 0.0 } else { 1.0 },
+            if D::DIM > 2 { 0.0 } else { 1.0 },
+        ))
 }
