@@ -312,8 +312,21 @@ fn bad_scheme_and_state_are_typed_errors() {
 
 #[test]
 fn asph_tensors_stay_positive_definite_and_on_target_volume() {
-    // The blob's particles, rebuilt with ASPH (the tensors are initialised by `new`).
-    let p = blob(false).state.particles.clone();
+    // The blob's particles, rebuilt with ASPH (the tensors are initialised by `new`),
+    // and a lone particle far away at 1e-3 of the blob's density, whose equivalent radius
+    // n_target (m/ρ)^(1/2) would be 32 times its start: it must stop at the cap.
+    let mut p = blob(false).state.particles.clone();
+    let dx = 1.0 / 24.0;
+    p.push(ParticleInit {
+        position: DVec2::new(5.0, 5.0),
+        velocity: DVec2::ZERO,
+        mass: dx * dx,
+        density: 1e-3,
+        specific_energy: 1.0,
+        smoothing_length: 2.5 * dx,
+        material: 0,
+    });
+    let lone = p.len() - 1;
     let mut sim = Simulation::new(
         p,
         vec![Material::fluid("gas", IdealGas::with_gamma(1.4).unwrap())],
@@ -350,6 +363,12 @@ fn asph_tensors_stay_positive_definite_and_on_target_volume() {
             "particle {i}: radius {radius} target {target}"
         );
     }
+    // The lone particle sits at the cap (before the cap, ASPH let it grow to 32×).
+    let lone_radius = s.h_tensor[lone].determinant().powf(-0.5);
+    assert!(
+        (lone_radius / (4.0 * 2.5 * dx) - 1.0).abs() < 1e-9,
+        "{lone_radius}"
+    );
     let c1 = sim.conserved();
     let scale: f64 = c0.mass;
     assert!((c1.momentum - c0.momentum).length() / scale < 1e-12);

@@ -836,12 +836,16 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
                 let grads = stage.grads.as_ref().expect("ASPH computes gradients");
                 let h_src = &rate_state.h_tensor;
                 let (m, rho) = (&p.mass, &p.density);
+                let (s0, cap) = (&y.spacing0, self.scheme.h_max_factor);
                 let new: Vec<(D::Tensor, f64)> = (0..p.len())
                     .into_par_iter()
                     .map(|i| {
+                        // The equivalent radius follows the density as in the scalar
+                        // mode, with the same cap: a particle expanding into vacuum
+                        // would otherwise grow its support without bound.
                         let target = if rho[i] > 0.0 {
                             let mi = self.scheme.geometry.kernel_mass(m[i], p.position[i]);
-                            n_target * (mi / rho[i]).powf(1.0 / d)
+                            (n_target * (mi / rho[i]).powf(1.0 / d)).min(cap * n_target * s0[i])
                         } else {
                             1.0 / h_src[i].sym_eigen().values[0]
                         };
