@@ -120,9 +120,58 @@ impl<D: Dimension, K: Kernel> PairKernel<D> for TensorPairKernel<'_, K, D::Tenso
         let w = self.kernel.sigma(D::DIM) * self.h_tensor[i].determinant();
         -w / self.h[i] * (d * self.kernel.f(eta) + eta * self.kernel.df(eta))
     }
+    /// The isotropic kernel of each particle's equivalent radius h = det(H)^(−1/d) at
+    /// distance `d`, whatever the direction. The normaliser W(Δp) of the artificial
+    /// stress stands for "one mean spacing", which an anisotropic H puts at the same
+    /// kernel coordinate in every direction: evaluating the tensor kernel itself at Δp
+    /// along a compressed axis gave W(Δp) → 0, so f = W/W(Δp) and f^n without bound
+    /// (RZ Taylor bar with ASPH: NaN at 20 µs). For an isotropic H this is the tensor
+    /// kernel's own value.
+    #[inline]
+    fn w_at(&self, i: usize, j: usize, _r_hat: D::Vector, d: f64) -> f64 {
+        let sigma = self.kernel.sigma(D::DIM);
+        let iso =
+            |k: usize| sigma * self.h[k].powi(-(D::DIM as i32)) * self.kernel.f(d / self.h[k]);
+        0.5 * (iso(i) + iso(j))
+    }
 }
 
 /// det(H)^(−1/d): the radius of the sphere with the ellipsoid's volume.
 pub(crate) fn equivalent_radius<T: Tensor>(h: &T) -> f64 {
     h.determinant().powf(-1.0 / T::Vector::DIM as f64)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use sph_core::Dim2;
+    use sph_core::glam::{DMat2, DVec2};
+    use sph_kernel::WendlandC2;
+
+    /// The artificial stress' normaliser W(Δp) of an anisotropic H is the isotropic
+    /// kernel of its equivalent radius in every direction: finite along a compressed axis
+    /// where the tensor kernel itself has already vanished.
+    #[test]
+    fn asph_stress_normaliser_is_the_isotropic_kernel_of_the_equivalent_radius() {
+        let h = 1.0e-3;
+        // Support 2h along x, h/2 along y: det H = 1/h², equivalent radius h.
+        let tensor = [DMat2::from_diagonal(DVec2::new(0.5 / h, 2.0 / h)); 2];
+        let radii = [h; 2];
+        let tk = TensorPairKernel {
+            kernel: WendlandC2,
+            h_tensor: &tensor,
+            h: &radii,
+        };
+        let sk = ScalarPairKernel::new(WendlandC2, &radii, 2);
+        let d = 0.6 * h;
+        // The tensor kernel along y is zero at 0.6 h (|H r| = 1.2) ...
+        assert_eq!(PairKernel::<Dim2>::w(&tk, 0, 1, DVec2::new(0.0, d)), 0.0);
+        // ... the normaliser is the scalar kernel's value, the same along x and y.
+        let iso = PairKernel::<Dim2>::w(&sk, 0, 1, DVec2::new(d, 0.0));
+        assert!(iso > 0.0);
+        for dir in [DVec2::X, DVec2::Y] {
+            let w = PairKernel::<Dim2>::w_at(&tk, 0, 1, dir, d);
+            assert!((w / iso - 1.0).abs() < 1e-14, "{w} {iso}");
+        }
+    }
 }
