@@ -38,8 +38,8 @@
 //! * [`fibonacci`] — the variable-resolution placement ([`FibonacciPlacement`]).
 //! * [`rz`] — placement in the meridional half-plane for axisymmetric (RZ) runs
 //!   ([`rz_lattice`], [`RzLayeredPlacement`]; masses per radian).
-//! * [`revolve`] — 3-D particles from an RZ placement, each ring as points evenly
-//!   spaced around the axis ([`revolve`]).
+//! * [`mod@revolve`] — 3-D particles from an RZ placement, each ring as points evenly
+//!   spaced around the axis ([`revolve()`]).
 //! * [`placement`] — the common result [`BodyParticles`].
 //! * [`quality`] — [`closest_approach`], the closest pair relative to the local spacing.
 //! * [`error`] — [`GeometryError`].

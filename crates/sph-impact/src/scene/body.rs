@@ -109,7 +109,7 @@ pub enum PlacementSpec {
     },
     /// The RZ variable-resolution layers about `origin` (on the z axis), each ring
     /// revolved into points one spacing apart around the axis
-    /// ([`sph_geometry::revolve`]): in 3-D a placement with no preferred azimuth and the
+    /// ([`sph_geometry::revolve()`]): in 3-D a placement with no preferred azimuth and the
     /// same rings as the RZ run of the scene; in RZ the same as `Variable`. The body
     /// must be symmetric about the z axis.
     Rings {

@@ -54,7 +54,7 @@ pub enum MomentumForm {
 
 /// How smoothing lengths follow the flow.
 ///
-/// Read through [`SmoothingModeRepr`], so that a key next to `kind = "scalar"` is an
+/// Read through `SmoothingModeRepr`, so that a key next to `kind = "scalar"` is an
 /// error like one next to `kind = "asph"` (serde ignores extra keys beside a unit
 /// variant's tag).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
