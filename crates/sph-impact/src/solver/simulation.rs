@@ -373,9 +373,10 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
         if !state.damage_tensor.is_empty() {
             // The pairs project each particle's damage tensor on their direction; a
             // scalar material's D enters as D I.
+            let tensor_form: Vec<bool> = self.materials.iter().map(has_tensor_damage).collect();
             let tensors = (0..n_real)
                 .map(|i| {
-                    if has_tensor_damage(&self.materials[state.particles.material[i] as usize]) {
+                    if tensor_form[state.particles.material[i] as usize] {
                         state.damage_tensor[i]
                     } else {
                         sph_core::glam::DMat3::IDENTITY * ext.damage[i]
