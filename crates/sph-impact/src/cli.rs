@@ -68,6 +68,9 @@ pub fn verify(
                 .map_err(|e| format!("{}: {e}", dir.join(name).display()))
         };
         write("profile.csv", outcome.profile.to_csv())?;
+        if !outcome.history.rows.is_empty() {
+            write("history.csv", outcome.history.to_csv())?;
+        }
         write(
             "metrics.json",
             serde_json::to_string_pretty(&outcome.metrics).map_err(|e| e.to_string())?,

@@ -74,7 +74,8 @@ enum Command {
         /// SchemeConfig; unknown fields are rejected).
         #[arg(long)]
         scheme: Option<String>,
-        /// Write profile.csv, metrics.json and plot.png into this directory.
+        /// Write profile.csv, metrics.json, plot.png (and history.csv where the problem samples
+        /// quantities in time) into this directory.
         #[arg(long)]
         out: Option<PathBuf>,
         /// Print the metrics as one JSON object.

@@ -30,7 +30,12 @@
 //! into a spurious radial force (it made the rim of a Taylor bar's foot jet outward at
 //! km/s, and skewed the RZ Sedov front). Far from the axis a uniform stress is then in
 //! equilibrium to the lattice's first-moment error (3e-7 m/s after a step in the test,
-//! against 2e-4 m/s of free-surface release). Summation density divides Σ m W by the
+//! against 2e-4 m/s of free-surface release). Inside the axis zone ŝ is kept within
+//! [0.35, 1.6], the range a lattice there gives it (0.43–1.21) widened: in a body only a
+//! few support radii across the zone holds its free surface too, and there the unbounded
+//! ŝ took either sign (−2.7 on a Taylor rod 4 spacings across, which then jetted at its
+//! rim and stopped; down to −2.8 on the projectile's surface in the first 3 µs of the
+//! Al → basalt impact at A_res 1 mm), turning the hoop force around. Summation density divides Σ m W by the
 //! same smoothing of r. The
 //! smoothing length follows the area per particle, h = n_target (m/(ρ r))^(1/2). Totals
 //! (`Simulation::conserved`) are per radian: multiply by 2π for the bodies'. A mirror

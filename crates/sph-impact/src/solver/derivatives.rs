@@ -500,9 +500,13 @@ pub(crate) fn rates<D: Dimension, P: PairKernel<D>>(
             // bias within two support radii of the axis. Farther out that bias is gone
             // and ŝ instead measures free surfaces and density jumps (∝ r_i/h at a
             // surface), where it would turn σ_rr ≠ σ_θθ into a spurious radial force:
-            // there the gauge is the exact ∂r/∂r = 1, blended smoothly. axisymmetric.rs.
+            // there the gauge is the exact ∂r/∂r = 1, blended smoothly. Within the zone
+            // it is kept in the range a lattice next to the axis gives it, widened
+            // (HOOP_GAUGE_RANGE), for bodies only a few support radii across, whose free
+            // surface lies inside the zone. axisymmetric.rs.
             let keep = axis_zone(ri / pk.h(i));
-            hoop_gauge = keep * (ri * gauge_a + gauge_g) + (1.0 - keep);
+            let s_hat = (ri * gauge_a + gauge_g).clamp(HOOP_GAUGE_RANGE.0, HOOP_GAUGE_RANGE.1);
+            hoop_gauge = keep * s_hat + (1.0 - keep);
             // The hoop part of the artificial stress: −R_θθ,i Σ_j m_j f_ij^n (r_j − r_i)/
             // (r_i r_j) ∂_r W_ij along r, so that a uniform R exerts no force, as in
             // Cartesian runs (without it a uniform tension pulled rings toward the axis
@@ -558,6 +562,18 @@ pub(crate) fn rates<D: Dimension, P: PairKernel<D>>(
         hoop_gauge,
     }
 }
+
+/// The range the hoop gauge ŝ is kept in (axisymmetric.rs). On a uniform lattice next to
+/// the axis ŝ takes 0.43–1.21 (measured: 0.427, 1.124, 1.213, 1.063, 1.005 in the first
+/// five columns at h = 4Δ; 0.570, 1.178, 0.988 at h = 2.5Δ). Far outside that, ŝ is no
+/// longer measuring the axis but a free surface or a density jump inside the axis zone,
+/// where its size grows like r/h with either sign: −2.73 on the outer surface of a
+/// Taylor rod 4 spacings across (its whole radius within two support radii of the
+/// axis), which turned the hoop force around; its rim jetted and the run stopped with a
+/// NaN at 26 µs. An estimate of ∂r/∂r = 1 cannot be negative. The bounds widen the lattice's range by about a
+/// fifth below and a third above; docs/verification.md (RZ) lists the scan they were
+/// chosen from and what each problem gives with them.
+const HOOP_GAUGE_RANGE: (f64, f64) = (0.35, 1.6);
 
 /// Weight of the axis part of the hoop gauge at q = r/h: 1 within two support radii of
 /// the axis (where the mirror images and R̂ reach a particle or its neighbours), 0 beyond

@@ -3,12 +3,13 @@
 use serde::Serialize;
 use serde_json::{Map, Value};
 
-/// One row per particle at the end time, with named columns.
+/// A table with named columns: one row per particle at the end time (the profile), or
+/// one row per sample time (a history).
 #[derive(Clone, Debug, Default, Serialize)]
 pub struct Profile {
     /// Column names (the first is the coordinate: `x` or `r`).
     pub columns: Vec<String>,
-    /// Rows, one per particle, sorted by the coordinate.
+    /// Rows: one per particle sorted by the coordinate, or one per sample time.
     pub rows: Vec<Vec<f64>>,
 }
 
@@ -78,6 +79,10 @@ pub struct Outcome {
     /// Further pictures (snapshots, histories).
     #[serde(skip)]
     pub pictures: Vec<Picture>,
+    /// Quantities against time (first column `t`), for the problems that sample them;
+    /// empty otherwise. Written as `history.csv` by `verify --out`.
+    #[serde(skip)]
+    pub history: Profile,
 }
 
 impl Outcome {

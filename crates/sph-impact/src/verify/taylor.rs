@@ -158,14 +158,17 @@ struct RodRun {
     plastic_strain: Vec<f64>,
     times: Vec<f64>,
     kinetic: Vec<f64>,
+    /// L(t) and R_f(t) at the sample times (m), read as at the end.
+    length: Vec<f64>,
+    face_radius: Vec<f64>,
     /// The modelled part's KE times this is the full rod's (4 for a quarter, 2π for RZ
     /// per radian).
     full_rod_factor: f64,
 }
 
 impl RodRun {
-    /// Runs `sim` to the end time, sampling its kinetic energy 80 times, and reads the
-    /// end state as (r, height above the anvil) with `rz`.
+    /// Runs `sim` to the end time, sampling its kinetic energy, length and face radius
+    /// 80 times, and reads the end state as (r, height above the anvil) with `rz`.
     fn simulate<D: Dimension>(
         name: &'static str,
         resolution: usize,
@@ -175,12 +178,24 @@ impl RodRun {
         rz: impl Fn(D::Vector) -> [f64; 2],
     ) -> Result<Self, SolverError> {
         let wall = std::time::Instant::now();
-        let (mut times, mut kinetic) = (vec![0.0], vec![sim.conserved().kinetic]);
+        let (mut times, mut kinetic) = (Vec::new(), Vec::new());
+        let (mut length, mut face_radius) = (Vec::new(), Vec::new());
         let (mut steps, samples) = (0, 80);
-        for k in 1..=samples {
-            steps += sim.run_until(T_END * k as f64 / samples as f64, |_, _| {})?;
+        for k in 0..=samples {
+            if k > 0 {
+                steps += sim.run_until(T_END * k as f64 / samples as f64, |_, _| {})?;
+            }
+            let shape: Vec<[f64; 2]> = sim
+                .state
+                .particles
+                .position
+                .iter()
+                .map(|&x| rz(x))
+                .collect();
             times.push(sim.state.time);
             kinetic.push(sim.conserved().kinetic);
+            length.push(rod_length(&shape, dx));
+            face_radius.push(rod_face_radius(&shape, dx));
         }
         Ok(Self {
             name,
@@ -198,6 +213,8 @@ impl RodRun {
             plastic_strain: sim.state.plastic_strain.clone(),
             times,
             kinetic,
+            length,
+            face_radius,
             full_rod_factor,
         })
     }
@@ -205,14 +222,8 @@ impl RodRun {
     /// L_f, R_f, the largest plastic strain and where, the KE history, the picture.
     fn outcome(self) -> Outcome {
         let dx = self.dx;
-        let length = self.rz.iter().fold(f64::NEG_INFINITY, |a, x| a.max(x[1])) + 0.5 * dx;
-        let face_radius = self
-            .rz
-            .iter()
-            .filter(|x| x[1] < dx)
-            .map(|x| x[0])
-            .fold(0.0, f64::max)
-            + 0.5 * dx;
+        let length = rod_length(&self.rz, dx);
+        let face_radius = rod_face_radius(&self.rz, dx);
         let (mut ep_max, mut ep_at) = (0.0f64, [0.0, 0.0]);
         for (i, &ep) in self.plastic_strain.iter().enumerate() {
             if ep > ep_max {
@@ -251,6 +262,23 @@ impl RodRun {
         rows.sort_by(|a, b| a[0].total_cmp(&b[0]));
         let (r, z): (Vec<f64>, Vec<f64>) =
             rows.iter().map(|row| (row[0] * 1e3, row[1] * 1e3)).unzip();
+        let t_us: Vec<f64> = self.times.iter().map(|t| t * 1e6).collect();
+        let mm = |v: &[f64]| v.iter().map(|x| x * 1e3).collect::<Vec<f64>>();
+        out.history = Profile {
+            columns: ["t", "length", "face_radius", "kinetic_energy_full_rod"]
+                .map(String::from)
+                .to_vec(),
+            rows: (0..self.times.len())
+                .map(|k| {
+                    vec![
+                        self.times[k],
+                        self.length[k],
+                        self.face_radius[k],
+                        self.full_rod_factor * self.kinetic[k],
+                    ]
+                })
+                .collect(),
+        };
         out.profile = Profile {
             columns: ["r", "z", "plastic_strain"].map(String::from).to_vec(),
             rows,
@@ -274,18 +302,39 @@ impl RodRun {
                 Panel {
                     title: "kinetic energy (modelled part)".into(),
                     labels: ("t (µs)".into(), "KE (J)".into()),
-                    lines: vec![(
-                        "SPH".into(),
-                        self.times.iter().map(|t| t * 1e6).collect(),
-                        self.kinetic,
-                    )],
+                    lines: vec![("SPH".into(), t_us.clone(), self.kinetic)],
+                    ..Default::default()
+                },
+                Panel {
+                    title: "length L and impact-face radius R_f".into(),
+                    labels: ("t (µs)".into(), "mm".into()),
+                    lines: vec![
+                        ("L".into(), t_us.clone(), mm(&self.length)),
+                        ("R_f".into(), t_us, mm(&self.face_radius)),
+                    ],
                     ..Default::default()
                 },
             ],
-            columns: 2,
+            columns: 3,
         });
         out
     }
+}
+
+/// L: the top of the rod (highest particle centre + Δx/2) above the anvil, from the
+/// particles as (r, height).
+fn rod_length(shape: &[[f64; 2]], dx: f64) -> f64 {
+    shape.iter().fold(f64::NEG_INFINITY, |a, x| a.max(x[1])) + 0.5 * dx
+}
+
+/// R_f: the outermost particle centre within one spacing of the anvil, + Δx/2.
+fn rod_face_radius(shape: &[[f64; 2]], dx: f64) -> f64 {
+    shape
+        .iter()
+        .filter(|x| x[1] < dx)
+        .map(|x| x[0])
+        .fold(0.0, f64::max)
+        + 0.5 * dx
 }
 
 /// The rod in axisymmetric RZ: a square lattice with `n` spacings across R0 in the (r, z)
