@@ -35,10 +35,10 @@
 //! few support radii across the zone holds its free surface too, and there the unbounded
 //! ŝ took either sign (−2.7 on a Taylor rod 4 spacings across, which then jetted at its
 //! rim and stopped; down to −2.8 on the projectile's surface in the first 3 µs of the
-//! Al → basalt impact at A_res 1 mm), turning the hoop force around. Summation density divides Σ m W by the
-//! same smoothing of r. The
-//! smoothing length follows the area per particle, h = n_target (m/(ρ r))^(1/2). Totals
-//! (`Simulation::conserved`) are per radian: multiply by 2π for the bodies'. A mirror
+//! Al → basalt impact at A_res 1 mm), turning the hoop force around. Summation density
+//! divides Σ m W by the same smoothing of r. The smoothing length follows the area per
+//! particle, h = n_target (m/(ρ r))^(1/2). Totals (`Simulation::conserved`) are per
+//! radian: multiply by 2π for the bodies'. A mirror
 //! ghost of a wall normal to r (a cylinder wall) carries the ring mass of its own radius,
 //! m r'/r, so it stands for the same area of material as its source. The Monaghan
 //! viscosity and the artificial stress are weighted like the pressure (× r̄/(r_i r_j),

@@ -570,9 +570,9 @@ pub(crate) fn rates<D: Dimension, P: PairKernel<D>>(
 /// where its size grows like r/h with either sign: −2.73 on the outer surface of a
 /// Taylor rod 4 spacings across (its whole radius within two support radii of the
 /// axis), which turned the hoop force around; its rim jetted and the run stopped with a
-/// NaN at 26 µs. An estimate of ∂r/∂r = 1 cannot be negative. The bounds widen the lattice's range by about a
-/// fifth below and a third above; docs/verification.md (RZ) lists the scan they were
-/// chosen from and what each problem gives with them.
+/// NaN at 26 µs. An estimate of ∂r/∂r = 1 cannot be negative. The bounds widen the
+/// lattice's range by about a fifth below and a third above; docs/verification.md (RZ)
+/// lists the scan they were chosen from and what each problem gives with them.
 const HOOP_GAUGE_RANGE: (f64, f64) = (0.35, 1.6);
 
 /// Weight of the axis part of the hoop gauge at q = r/h: 1 within two support radii of

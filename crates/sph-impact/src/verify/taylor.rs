@@ -153,7 +153,6 @@ struct RodRun {
     resolution: usize,
     steps: u64,
     wall_time_s: f64,
-    dx: f64,
     rz: Vec<[f64; 2]>,
     plastic_strain: Vec<f64>,
     times: Vec<f64>,
@@ -181,11 +180,12 @@ impl RodRun {
         let (mut times, mut kinetic) = (Vec::new(), Vec::new());
         let (mut length, mut face_radius) = (Vec::new(), Vec::new());
         let (mut steps, samples) = (0, 80);
+        let mut shape: Vec<[f64; 2]> = Vec::new();
         for k in 0..=samples {
             if k > 0 {
                 steps += sim.run_until(T_END * k as f64 / samples as f64, |_, _| {})?;
             }
-            let shape: Vec<[f64; 2]> = sim
+            shape = sim
                 .state
                 .particles
                 .position
@@ -202,14 +202,8 @@ impl RodRun {
             resolution,
             steps,
             wall_time_s: wall.elapsed().as_secs_f64(),
-            dx,
-            rz: sim
-                .state
-                .particles
-                .position
-                .iter()
-                .map(|&x| rz(x))
-                .collect(),
+            // The last sample is the end state.
+            rz: shape,
             plastic_strain: sim.state.plastic_strain.clone(),
             times,
             kinetic,
@@ -221,9 +215,8 @@ impl RodRun {
 
     /// L_f, R_f, the largest plastic strain and where, the KE history, the picture.
     fn outcome(self) -> Outcome {
-        let dx = self.dx;
-        let length = rod_length(&self.rz, dx);
-        let face_radius = rod_face_radius(&self.rz, dx);
+        let length = *self.length.last().expect("sampled at t = 0 and after");
+        let face_radius = *self.face_radius.last().expect("sampled at t = 0 and after");
         let (mut ep_max, mut ep_at) = (0.0f64, [0.0, 0.0]);
         for (i, &ep) in self.plastic_strain.iter().enumerate() {
             if ep > ep_max {
