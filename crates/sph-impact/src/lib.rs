@@ -3,7 +3,8 @@
 //! The Riemann-SPH solver assembled from the workspace crates (paper §2): particle state,
 //! derivative evaluation as a gather loop over CSR neighbour lists, RK2 time integration
 //! with the adaptive CFL step, smoothing-length (scalar or ASPH) update, boundaries
-//! (free surface, reflecting wall, periodic) — and the verification problems.
+//! (free surface, reflecting wall, contact wall that pushes but cannot pull, periodic) —
+//! and the verification problems.
 //!
 //! **Status:** fluids and solids in 1-D, 2-D (plane strain) and 3-D: any
 //! `EquationOfState`, deviatoric stress with a `StrengthModel` (Jaumann rate, radial

@@ -778,8 +778,9 @@ fn rz_hoop_stress_pushes_a_free_rod_outward_at_sigma_over_rho_r() {
 /// support radii of the axis, so its free surface is inside the zone where the hoop force
 /// uses the pair sums' gauge ŝ. Unbounded there, ŝ started at −2.73 on the outer column
 /// (the hoop force turned around); the rim jetted at 2 km/s from 13 µs and the run
-/// stopped with a NaN at 26 µs. Kept within its lattice range the rod comes to rest (measured: KE 1.0e-3 of the start at 80 µs, L_f 23.53 mm,
-/// R_f 6.08 mm; 164 rings).
+/// stopped with a NaN at 26 µs. Kept within its lattice range the rod comes to rest
+/// (measured on the contact anvil, session 16: KE 1.5e-3 of the start at 80 µs, L_f
+/// 23.56 mm, R_f 5.92 mm; 164 rings).
 #[test]
 fn rz_taylor_rod_four_across_comes_to_rest() {
     use sph_impact::verify::Problem;

@@ -652,3 +652,65 @@ fn a_missing_verify_form_names_the_problem() {
         assert!(!text.contains("= 0"), "{text}");
     }
 }
+
+/// A 1-D column of linear-elastic fluid (ρ0 = 1000 kg/m³, K = 1 GPa) at rest and at the
+/// uniform density ρ0 (1 + `strain`), on `wall` at x = 0 and free at its far end: the
+/// velocities after one step.
+fn column_on(wall: Boundary<sph_core::Dim1>, strain: f64) -> Vec<f64> {
+    let (n, dx, rho0) = (40, 1.0e-3, 1000.0);
+    let rho = rho0 * (1.0 + strain);
+    let mut p = Particles::<sph_core::Dim1>::new();
+    for k in 0..n {
+        p.push(ParticleInit {
+            position: (k as f64 + 0.5) * dx,
+            velocity: 0.0,
+            mass: rho * dx,
+            density: rho,
+            specific_energy: 0.0,
+            smoothing_length: 2.5 * dx,
+            material: 0,
+        });
+    }
+    let eos = LinearElastic::new(LinearElasticParams { rho0, K0: 1.0e9 }).unwrap();
+    let mut sim = Simulation::new(
+        p,
+        vec![Material::fluid("elastic fluid", eos)],
+        SchemeConfig::default(),
+        WendlandC2,
+        vec![wall],
+        None,
+    )
+    .unwrap();
+    sim.step(f64::INFINITY).unwrap();
+    sim.state.particles.velocity.clone()
+}
+
+#[test]
+fn contact_wall_pushes_but_does_not_pull() {
+    let (wall, contact) = (
+        Boundary::Wall {
+            point: 0.0,
+            normal: 1.0,
+        },
+        Boundary::Contact {
+            point: 0.0,
+            normal: 1.0,
+        },
+    );
+    // In tension the mirror wall holds the first particle in place (its ghosts pull it
+    // as hard as its real neighbours do), while the contact wall lets go: the first
+    // particle then moves off the wall exactly as the free far end moves in.
+    let held = column_on(wall, -0.01);
+    let released = column_on(contact, -0.01);
+    let far_end = *released.last().unwrap();
+    println!(
+        "tension: wall v0 = {:e}, contact v0 = {:e}, far end {:e} m/s",
+        held[0], released[0], far_end
+    );
+    assert!(far_end < 0.0, "the free end is pulled inward: {far_end}");
+    assert!(held[0].abs() < 1e-9 * far_end.abs(), "{}", held[0]);
+    assert!(released[0] > 0.0);
+    assert!((released[0] + far_end).abs() < 1e-9 * far_end.abs());
+    // In compression both walls push alike, to the last bit.
+    assert_eq!(column_on(wall, 0.01), column_on(contact, 0.01));
+}

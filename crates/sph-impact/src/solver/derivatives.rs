@@ -436,6 +436,12 @@ pub(crate) fn rates<D: Dimension, P: PairKernel<D>>(
             if scheme.unbonded_interfaces && !same_material && force.dot(r_hat) < 0.0 {
                 continue;
             }
+            // A contact wall (an anvil) pushes but cannot pull: a pair with one of its
+            // ghosts that would pull i toward the wall is left out the same way, so
+            // material in tension there meets a free surface (boundary.rs).
+            if ext.is_unilateral(j) && force.dot(r_hat) < 0.0 {
+                continue;
+            }
             out.dv += force;
             if j >= ext.n_real {
                 dv_boundary += force;

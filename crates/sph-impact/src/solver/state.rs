@@ -146,6 +146,9 @@ pub(crate) struct Extended<'a, D: Dimension> {
     /// ghost's (reflection or identity); real particles map by the identity, which is not
     /// stored (72 bytes per particle in 3-D).
     pub ghost_map: Vec<D::Tensor>,
+    /// For ghosts only (index k − n_real): true for the ghosts of a contact wall
+    /// ([`Boundary::Contact`]), and for the ghosts other boundaries make of them.
+    ghost_unilateral: Vec<bool>,
     /// The real particles' deviatoric stress S, borrowed from the state (empty without
     /// strength): [`Self::stress`] applies the damage when it is read, so the pair passes
     /// hold no copy of it (72 bytes per particle in 3-D).
@@ -197,6 +200,13 @@ impl<'a, D: Dimension> Extended<'a, D> {
         }
     }
 
+    /// True when particle k is a ghost of a contact wall, which pushes but cannot pull
+    /// (false for real particles).
+    #[inline]
+    pub fn is_unilateral(&self, k: usize) -> bool {
+        k >= self.n_real && self.ghost_unilateral[k - self.n_real]
+    }
+
     /// The map of particle k's vectors from its source's (identity for real particles).
     #[inline]
     pub fn map(&self, k: usize) -> D::Tensor {
@@ -238,6 +248,7 @@ impl<'a, D: Dimension> Extended<'a, D> {
             material: p.material.clone(),
             source: (0..n as u32).collect(),
             ghost_map: Vec::new(),
+            ghost_unilateral: Vec::new(),
             real_stress: stress,
             ghost_stress: Vec::new(),
             damage,
@@ -273,6 +284,8 @@ impl<'a, D: Dimension> Extended<'a, D> {
                 ext.source.push(ext.source[s]);
                 let composed = g.map.mul_tensor(&ext.map(s));
                 ext.ghost_map.push(composed);
+                let unilateral = b.is_unilateral() || ext.is_unilateral(s);
+                ext.ghost_unilateral.push(unilateral);
                 if ext.has_stress() {
                     // A stress maps as a tensor: S' = M S Mᵀ with M the reflection in 3-D.
                     let m = embed_map::<D>(&g.map);

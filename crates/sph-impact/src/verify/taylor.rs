@@ -4,8 +4,9 @@
 //! Y = 400 MPa with linear hardening H = 100 MPa; t_end = 80 µs. Reference (FE spread):
 //! L_f = 21.42–21.66 mm, R_f = 7.02–7.24 mm; targets 21.5 mm and 7.1 mm.
 //!
-//! 3-D quarter model: the anvil z = 0 and the symmetry planes x = 0 and y = 0 are
-//! reflecting walls (ghosts), the rod a cubic lattice with `n` spacings across R0, or
+//! 3-D quarter model: the symmetry planes x = 0 and y = 0 are mirror walls (ghosts), the
+//! anvil z = 0 a contact wall (mirror ghosts that push but cannot pull: the rod's foot may
+//! lift off where it is in tension, as on a real anvil), the rod a cubic lattice with `n` spacings across R0, or
 //! (`RodPlacement::Rings`, `verify taylor --geometry rings`) the RZ run's rings revolved
 //! about the axis, whose foot has no preferred azimuth (docs/verification.md).
 //! Measured: L_f = the largest z, R_f = the largest distance from the axis among the
@@ -83,9 +84,10 @@ pub(crate) fn run(
     }
     let z_min0 = p.position.iter().fold(f64::INFINITY, |a, x| a.min(x.z));
     // Walls: the anvil just below the rod's face (half a spacing below the lowest
-    // particle centres: where the material surface is), and the symmetry planes.
+    // particle centres: where the material surface is), a contact that pushes but cannot
+    // pull, and the symmetry planes (mirrors).
     let walls = vec![
-        Boundary::Wall {
+        Boundary::Contact {
             point: DVec3::new(0.0, 0.0, z_min0 - 0.5 * dx),
             normal: DVec3::Z,
         },
@@ -331,8 +333,8 @@ fn rod_face_radius(shape: &[[f64; 2]], dx: f64) -> f64 {
 }
 
 /// The rod in axisymmetric RZ: a square lattice with `n` spacings across R0 in the (r, z)
-/// half-plane, each particle a ring of mass ρ Δx² r per radian; the anvil a reflecting
-/// wall below the rod, the axis handled by the solver.
+/// half-plane, each particle a ring of mass ρ Δx² r per radian; the anvil a contact wall
+/// below the rod (it pushes but cannot pull), the axis handled by the solver.
 pub(crate) fn run_rz(n: usize, mut scheme: SchemeConfig) -> Result<Outcome, SolverError> {
     scheme.geometry = crate::Geometry::Axisymmetric;
     let (eos, strength) = copper()?;
@@ -356,7 +358,7 @@ pub(crate) fn run_rz(n: usize, mut scheme: SchemeConfig) -> Result<Outcome, Solv
         p,
         vec![Material::solid("copper (bilinear)", eos, strength)],
         scheme,
-        vec![Boundary::Wall {
+        vec![Boundary::Contact {
             point: DVec2::ZERO,
             normal: DVec2::Y,
         }],
