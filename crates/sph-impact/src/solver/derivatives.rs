@@ -429,17 +429,15 @@ pub(crate) fn rates<D: Dimension, P: PairKernel<D>>(
                     f
                 }
             };
-            // An unbonded interface carries no tension: a pair of different materials
-            // whose force would pull i toward j does not interact at all (no force, and
-            // no density or energy change, so the opening gap does not stretch either
-            // body). The test is the same for (i, j) and (j, i).
-            if scheme.unbonded_interfaces && !same_material && force.dot(r_hat) < 0.0 {
-                continue;
-            }
-            // A contact wall (an anvil) pushes but cannot pull: a pair with one of its
-            // ghosts that would pull i toward the wall is left out the same way, so
-            // material in tension there meets a free surface (boundary.rs).
-            if ext.is_unilateral(j) && force.dot(r_hat) < 0.0 {
+            // Pairs that carry no tension: an unbonded interface (two different
+            // materials) and a contact wall (an anvil: i and a ghost of a
+            // `Boundary::Contact`). A pair whose force would pull i toward j does not
+            // interact at all (no force, and no density or energy change, so the opening
+            // gap does not stretch either side; material in tension at a contact wall
+            // meets a free surface). The test is the same for (i, j) and (j, i).
+            let tensionless =
+                (scheme.unbonded_interfaces && !same_material) || ext.is_unilateral(j);
+            if tensionless && force.dot(r_hat) < 0.0 {
                 continue;
             }
             out.dv += force;

@@ -5,10 +5,11 @@
 //! L_f = 21.42–21.66 mm, R_f = 7.02–7.24 mm; targets 21.5 mm and 7.1 mm.
 //!
 //! 3-D quarter model: the symmetry planes x = 0 and y = 0 are mirror walls (ghosts), the
-//! anvil z = 0 a contact wall (mirror ghosts that push but cannot pull: the rod's foot may
-//! lift off where it is in tension, as on a real anvil), the rod a cubic lattice with `n` spacings across R0, or
-//! (`RodPlacement::Rings`, `verify taylor --geometry rings`) the RZ run's rings revolved
-//! about the axis, whose foot has no preferred azimuth (docs/verification.md).
+//! anvil z = 0 a contact wall (mirror ghosts that push but cannot pull: the rod's foot
+//! may lift off where it is in tension, as on a real anvil), the rod a cubic lattice with
+//! `n` spacings across R0, or (`RodPlacement::Rings`, `verify taylor --geometry rings`)
+//! the RZ run's rings revolved about the axis, whose foot has no preferred azimuth
+//! (docs/verification.md).
 //! Measured: L_f = the largest z, R_f = the largest distance from the axis among the
 //! particles within one spacing of the anvil (the particle centres plus half a spacing:
 //! the material edge), the largest plastic strain, and KE(t).
