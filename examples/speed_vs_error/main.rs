@@ -4,10 +4,14 @@
 //!
 //! ```text
 //! cargo run --release -p sph-examples --example speed_vs_error -- \
-//!     RUN_DIR... [--plot docs/validation_speed_vs_error.png]
+//!     RUN_DIR... [--at T] [--plot docs/validation_speed_vs_error.png]
 //! ```
 //!
 //! Each run's experiment is the Table 2 row at its impact speed (`impact_speed_m_s`).
+//! Runs that ended at different times compare with `--at T` (seconds): the numbers are
+//! then the last `history.csv` row at or before T, and the runtime to T is the run's wall
+//! time prorated by its steps to T (the particle count of a run does not change, so its
+//! cost per step is nearly constant).
 
 use clap::Parser;
 use sph_diagnostics::Figure;
@@ -21,6 +25,10 @@ struct Args {
     /// Run directories, each with a summary.json.
     #[arg(required = true)]
     runs: Vec<PathBuf>,
+    /// Compare at this simulated time (s) from each run's history.csv instead of at its
+    /// end; every run must have reached it.
+    #[arg(long)]
+    at: Option<f64>,
     /// Where to write the plot (PNG).
     #[arg(long, default_value = "speed_vs_error.png")]
     plot: PathBuf,
@@ -38,7 +46,7 @@ struct Run {
     errors: [f64; 3],
 }
 
-fn read(dir: &Path) -> Result<Run, String> {
+fn read(dir: &Path, at: Option<f64>) -> Result<Run, String> {
     let path = dir.join("summary.json");
     let text = std::fs::read_to_string(&path).map_err(|e| format!("{}: {e}", path.display()))?;
     let json: serde_json::Value =
@@ -52,17 +60,35 @@ fn read(dir: &Path) -> Result<Run, String> {
     let e = sph_examples::experiment_at(u)
         .ok_or_else(|| format!("{}: impact speed {u} m/s is not in Table 2", path.display()))?;
     let rel = |x: f64, r: f64| x / r - 1.0;
+    let (end_time, wall, diameter, depth, beta) = match at {
+        None => (
+            num("end_time_s")?,
+            num("wall_time_s")?,
+            num("crater_diameter_m")?,
+            num("crater_depth_m")?,
+            num("beta")?,
+        ),
+        Some(t) => {
+            let path = dir.join("history.csv");
+            let text =
+                std::fs::read_to_string(&path).map_err(|e| format!("{}: {e}", path.display()))?;
+            let row = sph_examples::history_row_at(&text, t)
+                .map_err(|e| format!("{}: {e}", path.display()))?;
+            let wall = num("wall_time_s")? * row.step / num("steps")?;
+            (t, wall, row.crater_diameter, row.crater_depth, row.beta)
+        }
+    };
     Ok(Run {
         name: dir.display().to_string(),
         speed: e.speed,
         geometry: json["geometry"].as_str().unwrap_or("?").to_owned(),
         particles: num("particles")?,
-        wall: num("wall_time_s")?,
-        end_time: num("end_time_s")?,
+        wall,
+        end_time,
         errors: [
-            rel(num("crater_diameter_m")?, e.diameter),
-            rel(num("crater_depth_m")?, e.depth),
-            rel(num("beta")?, e.beta),
+            rel(diameter, e.diameter),
+            rel(depth, e.depth),
+            rel(beta, e.beta),
         ],
     })
 }
@@ -71,7 +97,7 @@ fn main() -> ExitCode {
     let args = Args::parse();
     let mut runs = Vec::new();
     for dir in &args.runs {
-        match read(dir) {
+        match read(dir, args.at) {
             Ok(r) => runs.push(r),
             Err(m) => {
                 eprintln!("error: {m}");
@@ -80,8 +106,12 @@ fn main() -> ExitCode {
         }
     }
     runs.sort_by(|a, b| a.wall.total_cmp(&b.wall));
+    let (when, wall) = match args.at {
+        None => ("t_end (µs)", "wall (s)"),
+        Some(_) => ("at (µs)", "wall to then (s, prorated by steps)"),
+    };
     println!(
-        "| run | km/s | geometry | particles | t_end (µs) | wall (s) | Ø error | depth error | β error |"
+        "| run | km/s | geometry | particles | {when} | {wall} | Ø error | depth error | β error |"
     );
     println!("|---|---|---|---|---|---|---|---|---|");
     for r in &runs {
@@ -107,10 +137,13 @@ fn main() -> ExitCode {
     ));
     let plotted = (|| {
         let ax = fig.panel(0, 0, 1, 1)?;
-        ax.xlabel("wall time (s)")
-            .ylabel("|error| (%)")
-            .xscale(Scale::Log)
-            .grid(true);
+        ax.xlabel(match args.at {
+            None => "wall time (s)".to_owned(),
+            Some(t) => format!("wall time to {:.0} µs (s)", t * 1e6),
+        })
+        .ylabel("|error| (%)")
+        .xscale(Scale::Log)
+        .grid(true);
         let wall: Vec<f64> = runs.iter().map(|r| r.wall).collect();
         for (k, (name, color)) in [("diameter", BLUE), ("depth", RED), ("beta", GREEN)]
             .into_iter()

@@ -70,6 +70,42 @@ impl<D: Dimension> Rates<D> {
     };
 }
 
+/// What a set of i's pairs adds to its rates (pass 2): dv/dt, dρ/dt (dη/dt in RZ), de/dt,
+/// the compatible form's work, and in RZ the sums of the hoop gauge and of the artificial
+/// stress' hoop part.
+#[derive(Clone, Copy, Debug)]
+struct PairPart<D: Dimension> {
+    dv: D::Vector,
+    drho: f64,
+    de: f64,
+    work: f64,
+    gauge_a: f64,
+    gauge_g: f64,
+    astress_hoop: f64,
+}
+
+impl<D: Dimension> PairPart<D> {
+    const ZERO: Self = PairPart {
+        dv: D::Vector::ZERO,
+        drho: 0.0,
+        de: 0.0,
+        work: 0.0,
+        gauge_a: 0.0,
+        gauge_g: 0.0,
+        astress_hoop: 0.0,
+    };
+
+    fn add(&mut self, other: &Self) {
+        self.dv += other.dv;
+        self.drho += other.drho;
+        self.de += other.de;
+        self.work += other.work;
+        self.gauge_a += other.gauge_a;
+        self.gauge_g += other.gauge_g;
+        self.astress_hoop += other.astress_hoop;
+    }
+}
+
 /// The result of pass 2: the rates of every real particle, and what only some particles
 /// or geometries have, kept apart so that a 3-D run does not hold them per particle.
 #[derive(Clone, Debug)]
@@ -239,7 +275,6 @@ pub(crate) fn rates<D: Dimension, P: PairKernel<D>>(
     let pair_sums = |i: usize| -> (Rates<D>, D::Vector, f64) {
         let (xi, vi) = (ext.position[i], ext.velocity[i]);
         let ri = radius(i);
-        let (mut gauge_a, mut gauge_g) = (0.0, 0.0);
         let (rhoi, pi, ci, mi_mat) = (
             ext.density[i],
             ext.pressure[i],
@@ -266,7 +301,9 @@ pub(crate) fn rates<D: Dimension, P: PairKernel<D>>(
         } else {
             0.0
         };
-        let mut astress_hoop_sum = 0.0;
+        // i's sums over its ordinary partners, and over the ghosts of contact walls.
+        let (mut own, mut wall) = (PairPart::<D>::ZERO, PairPart::<D>::ZERO);
+        let mut wall_normal = D::Vector::ZERO;
         for j in list.neighbors(i) {
             let j = j as usize;
             let r = xi - ext.position[j];
@@ -429,29 +466,28 @@ pub(crate) fn rates<D: Dimension, P: PairKernel<D>>(
                     f
                 }
             };
-            // Pairs that carry no tension: an unbonded interface (two different
-            // materials) and a contact wall (an anvil: i and a ghost of a
-            // `Boundary::Contact`). A pair whose force would pull i toward j does not
-            // interact at all (no force, and no density or energy change, so the opening
-            // gap does not stretch either side; material in tension at a contact wall
-            // meets a free surface). The test is the same for (i, j) and (j, i).
-            let tensionless =
-                (scheme.unbonded_interfaces && !same_material) || ext.is_unilateral(j);
-            if tensionless && force.dot(r_hat) < 0.0 {
+            // An unbonded interface (two different materials) carries no tension: a pair
+            // whose force would pull i toward j does not interact at all (no force, and
+            // no density or energy change, so the opening gap does not stretch either
+            // side). The test is the same for (i, j) and (j, i), so momentum balances.
+            let contact = ext.is_unilateral(j);
+            if !contact && scheme.unbonded_interfaces && !same_material && force.dot(r_hat) < 0.0 {
                 continue;
             }
-            out.dv += force;
-            if j >= ext.n_real {
-                dv_boundary += force;
-            }
+            // The pair's contributions, to i's sums or, for a ghost of a contact wall, to
+            // the wall's (decided on below the loop).
+            let mut part = PairPart {
+                dv: force,
+                ..PairPart::ZERO
+            };
             if rz {
                 let vx = mj / etaj * g.component(0);
-                gauge_a += vx;
-                gauge_g += vx * rj;
+                part.gauge_a = vx;
+                part.gauge_g = vx * rj;
                 // 1/r_i + 1/r_j = 2/r_j + (r_j − r_i)/(r_i r_j): the first part is the
                 // Cartesian pair term of R/r (zero for a uniform R on a complete
                 // lattice), the second the geometric part the hoop force cancels.
-                astress_hoop_sum += mj * f_astress * (rj - ri) / (ri * rj) * g.component(0);
+                part.astress_hoop = mj * f_astress * (rj - ri) / (ri * rj) * g.component(0);
             }
             // The continuity equation uses the corrected gradient when enabled.
             let gc = match grads {
@@ -459,7 +495,7 @@ pub(crate) fn rates<D: Dimension, P: PairKernel<D>>(
                 _ => g,
             };
             let dvs = (vi - v_star).dot(gc);
-            out.drho += match scheme.density {
+            part.drho = match scheme.density {
                 DensityForm::Volume => 2.0 * etai * mj / etaj * dvs,
                 DensityForm::Mass => 2.0 * mj * dvs,
                 // Summation density is recomputed from positions each stage.
@@ -468,9 +504,9 @@ pub(crate) fn rates<D: Dimension, P: PairKernel<D>>(
             // Energy: the compatible form pairs with the plain (antisymmetric) gradient
             // of the momentum equation, which is what makes it exactly conservative.
             let dvs_plain = (vi - v_star).dot(g);
-            out.de += match scheme.energy {
+            part.de = match scheme.energy {
                 EnergyForm::Compatible => {
-                    out.work += force.dot(v_star);
+                    part.work = force.dot(v_star);
                     -force.dot(vi - v_star)
                 }
                 EnergyForm::Study => {
@@ -487,7 +523,33 @@ pub(crate) fn rates<D: Dimension, P: PairKernel<D>>(
                         - 0.5 * vij.dot(a_force)
                 }
             };
+            if contact {
+                wall.add(&part);
+                wall_normal += r_hat;
+            } else {
+                if j >= ext.n_real {
+                    dv_boundary += force;
+                }
+                own.add(&part);
+            }
         }
+        // A contact wall (`Boundary::Contact`, an anvil) pushes but cannot pull: its
+        // ghosts act on i as a mirror's do while their total force pushes i away from
+        // the wall (along Σ r̂, from the ghosts to i), and not at all when it would pull
+        // i toward it: i is then at a free surface and may lift off. The decision is on
+        // the total, as a contact's traction is: deciding pair by pair dropped the
+        // oblique pairs that a tension along the wall makes attractive, with their share
+        // of the push, and drove material pressed onto the wall into it (test
+        // `a_contact_wall_in_compression_acts_as_a_mirror_under_lateral_tension`).
+        if wall.dv.dot(wall_normal) > 0.0 {
+            dv_boundary += wall.dv;
+            own.add(&wall);
+        }
+        out.dv = own.dv;
+        out.drho = own.drho;
+        out.de = own.de;
+        out.work = own.work;
+        let (gauge_a, gauge_g, astress_hoop_sum) = (own.gauge_a, own.gauge_g, own.astress_hoop);
         // The grad-h factor makes the continuity equation the time derivative of the
         // summation density with h ∝ ρ^(−1/d) (Springel & Hernquist 2002; Price
         // 2012, eq. 39); without it the density drifts wherever h changes fast, as

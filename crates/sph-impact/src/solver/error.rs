@@ -46,7 +46,7 @@ pub enum SolverError {
     },
     /// The time step collapsed.
     #[error(
-        "step {step}: time step {dt:e} s below the minimum {min:e} s (bound by particle id {id}: {reason})"
+        "step {step}: time step {dt:e} s below the minimum {min:e} s (bound by particle id {id}: {reason}; at {position:?} m, density {density:e} kg/m^3, specific energy {specific_energy:e} J/kg, speed {speed:e} m/s, h {smoothing_length:e} m)"
     )]
     TimestepCollapse {
         /// Step number.
@@ -59,6 +59,16 @@ pub enum SolverError {
         id: u64,
         /// Why.
         reason: &'static str,
+        /// That particle's position (m; the unused components 0).
+        position: [f64; 3],
+        /// Its density (kg/m³).
+        density: f64,
+        /// Its specific internal energy (J/kg).
+        specific_energy: f64,
+        /// Its speed (m/s).
+        speed: f64,
+        /// Its smoothing length (m).
+        smoothing_length: f64,
     },
     /// A boundary condition is invalid.
     #[error("boundary {index}: {reason}")]

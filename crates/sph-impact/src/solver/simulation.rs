@@ -615,16 +615,23 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
         let floor = self.first_dt.get_or_insert(vote.dt).to_owned() * self.scheme.dt_floor_fraction;
         if !(dt > 0.0 && dt.is_finite()) || vote.dt < floor {
             let step = s0_state.step;
-            return Err(self.put_back(
-                s0_state,
-                SolverError::TimestepCollapse {
-                    step,
-                    dt: vote.dt,
-                    min: floor,
-                    id: vote.particle_id,
-                    reason: vote.reason,
-                },
-            ));
+            // Where the collapse is, for the post-mortem (the particle that bound it).
+            let p = &s0_state.particles;
+            let i = p.id.iter().position(|&id| id == vote.particle_id);
+            let at = |f: &dyn Fn(usize) -> f64| i.map_or(f64::NAN, f);
+            let error = SolverError::TimestepCollapse {
+                step,
+                dt: vote.dt,
+                min: floor,
+                id: vote.particle_id,
+                reason: vote.reason,
+                position: i.map_or([f64::NAN; 3], |i| p.position[i].to_array3()),
+                density: at(&|i| p.density[i]),
+                specific_energy: at(&|i| p.specific_energy[i]),
+                speed: at(&|i| p.velocity[i].norm()),
+                smoothing_length: at(&|i| p.smoothing_length[i]),
+            };
+            return Err(self.put_back(s0_state, error));
         }
         let t0 = Instant::now();
         let mut half = std::mem::take(&mut self.midpoint);

@@ -10,9 +10,11 @@
 //! `n` spacings across R0, or (`RodPlacement::Rings`, `verify taylor --geometry rings`)
 //! the RZ run's rings revolved about the axis, whose foot has no preferred azimuth
 //! (docs/verification.md).
-//! Measured: L_f = the largest z, R_f = the largest distance from the axis among the
-//! particles within one spacing of the anvil (the particle centres plus half a spacing:
-//! the material edge), the largest plastic strain, and KE(t).
+//! Measured: L_f = the largest z, R_f = the largest distance from the axis (the widest
+//! point of the rod: its mushroomed foot), each as the particle centres plus half a
+//! spacing (the material edge); the radius of the foot's contact with the anvil (the
+//! same over the particles within one spacing of it: R_f until session 16, which drops
+//! a rim lifted by more than half a spacing); the largest plastic strain; and KE(t).
 
 use super::outcome::{Outcome, Panel, Picture, Profile};
 use super::setup::elastic_solid;
@@ -160,9 +162,11 @@ struct RodRun {
     plastic_strain: Vec<f64>,
     times: Vec<f64>,
     kinetic: Vec<f64>,
-    /// L(t) and R_f(t) at the sample times (m), read as at the end.
+    /// L(t), R_f(t) and the anvil contact radius at the sample times (m), read as at
+    /// the end.
     length: Vec<f64>,
     face_radius: Vec<f64>,
+    contact_radius: Vec<f64>,
     /// The modelled part's KE times this is the full rod's (4 for a quarter, 2π for RZ
     /// per radian).
     full_rod_factor: f64,
@@ -181,7 +185,8 @@ impl RodRun {
     ) -> Result<Self, SolverError> {
         let wall = std::time::Instant::now();
         let (mut times, mut kinetic) = (Vec::new(), Vec::new());
-        let (mut length, mut face_radius) = (Vec::new(), Vec::new());
+        let (mut length, mut face_radius, mut contact_radius) =
+            (Vec::new(), Vec::new(), Vec::new());
         let (mut steps, samples) = (0, 80);
         let mut shape: Vec<[f64; 2]> = Vec::new();
         for k in 0..=samples {
@@ -199,6 +204,7 @@ impl RodRun {
             kinetic.push(sim.conserved().kinetic);
             length.push(rod_length(&shape, dx));
             face_radius.push(rod_face_radius(&shape, dx));
+            contact_radius.push(anvil_contact_radius(&shape, dx));
         }
         Ok(Self {
             name,
@@ -212,6 +218,7 @@ impl RodRun {
             kinetic,
             length,
             face_radius,
+            contact_radius,
             full_rod_factor,
         })
     }
@@ -220,6 +227,10 @@ impl RodRun {
     fn outcome(self) -> Outcome {
         let length = *self.length.last().expect("sampled at t = 0 and after");
         let face_radius = *self.face_radius.last().expect("sampled at t = 0 and after");
+        let contact = *self
+            .contact_radius
+            .last()
+            .expect("sampled at t = 0 and after");
         let (mut ep_max, mut ep_at) = (0.0f64, [0.0, 0.0]);
         for (i, &ep) in self.plastic_strain.iter().enumerate() {
             if ep > ep_max {
@@ -240,6 +251,7 @@ impl RodRun {
         out.set("final_length_error_relative", length / 21.5e-3 - 1.0);
         out.set("face_radius_mm", face_radius * 1e3);
         out.set("face_radius_error_relative", face_radius / 7.1e-3 - 1.0);
+        out.set("anvil_contact_radius_mm", contact * 1e3);
         out.set("plastic_strain_max", ep_max);
         out.set("plastic_strain_max_radius_mm", ep_at[0] * 1e3);
         out.set("plastic_strain_max_height_mm", ep_at[1] * 1e3);
@@ -261,15 +273,22 @@ impl RodRun {
         let t_us: Vec<f64> = self.times.iter().map(|t| t * 1e6).collect();
         let mm = |v: &[f64]| v.iter().map(|x| x * 1e3).collect::<Vec<f64>>();
         out.history = Profile {
-            columns: ["t", "length", "face_radius", "kinetic_energy_full_rod"]
-                .map(String::from)
-                .to_vec(),
+            columns: [
+                "t",
+                "length",
+                "face_radius",
+                "anvil_contact_radius",
+                "kinetic_energy_full_rod",
+            ]
+            .map(String::from)
+            .to_vec(),
             rows: (0..self.times.len())
                 .map(|k| {
                     vec![
                         self.times[k],
                         self.length[k],
                         self.face_radius[k],
+                        self.contact_radius[k],
                         self.full_rod_factor * self.kinetic[k],
                     ]
                 })
@@ -302,11 +321,12 @@ impl RodRun {
                     ..Default::default()
                 },
                 Panel {
-                    title: "length L and impact-face radius R_f".into(),
+                    title: "length L, foot radius R_f and its anvil contact".into(),
                     labels: ("t (µs)".into(), "mm".into()),
                     lines: vec![
                         ("L".into(), t_us.clone(), mm(&self.length)),
-                        ("R_f".into(), t_us, mm(&self.face_radius)),
+                        ("R_f".into(), t_us.clone(), mm(&self.face_radius)),
+                        ("anvil contact".into(), t_us, mm(&self.contact_radius)),
                     ],
                     ..Default::default()
                 },
@@ -323,14 +343,23 @@ fn rod_length(shape: &[[f64; 2]], dx: f64) -> f64 {
     shape.iter().fold(f64::NEG_INFINITY, |a, x| a.max(x[1])) + 0.5 * dx
 }
 
-/// R_f: the outermost particle centre within one spacing of the anvil, + Δx/2.
+/// R_f: the outermost particle centre, + Δx/2. The rod's widest point is its foot; on
+/// the contact anvil the foot's rim may lift off by a fraction of a spacing (0.2 mm at
+/// 8 across in 3-D, session 16), and the mushroom's radius is what the FE reference
+/// and the recovered rods give.
 fn rod_face_radius(shape: &[[f64; 2]], dx: f64) -> f64 {
-    shape
-        .iter()
-        .filter(|x| x[1] < dx)
-        .map(|x| x[0])
-        .fold(0.0, f64::max)
-        + 0.5 * dx
+    outer_radius(shape.iter()) + 0.5 * dx
+}
+
+/// The foot's contact with the anvil: the outermost particle centre within one spacing
+/// of it, + Δx/2 (R_f until session 16). Less than R_f where the rim has lifted.
+fn anvil_contact_radius(shape: &[[f64; 2]], dx: f64) -> f64 {
+    outer_radius(shape.iter().filter(|x| x[1] < dx)) + 0.5 * dx
+}
+
+/// The largest distance from the axis among `points` (r, height), 0 for none.
+fn outer_radius<'a>(points: impl Iterator<Item = &'a [f64; 2]>) -> f64 {
+    points.map(|x| x[0]).fold(0.0, f64::max)
 }
 
 /// The rod in axisymmetric RZ: a square lattice with `n` spacings across R0 in the (r, z)
