@@ -545,10 +545,7 @@ pub(crate) fn rates<D: Dimension, P: PairKernel<D>>(
             dv_boundary += wall.dv;
             own.add(&wall);
         }
-        out.dv = own.dv;
-        out.drho = own.drho;
-        out.de = own.de;
-        out.work = own.work;
+        (out.dv, out.drho, out.de, out.work) = (own.dv, own.drho, own.de, own.work);
         let (gauge_a, gauge_g, astress_hoop_sum) = (own.gauge_a, own.gauge_g, own.astress_hoop);
         // The grad-h factor makes the continuity equation the time derivative of the
         // summation density with h ∝ ρ^(−1/d) (Springel & Hernquist 2002; Price

@@ -617,19 +617,28 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
             let step = s0_state.step;
             // Where the collapse is, for the post-mortem (the particle that bound it).
             let p = &s0_state.particles;
-            let i = p.id.iter().position(|&id| id == vote.particle_id);
-            let at = |f: &dyn Fn(usize) -> f64| i.map_or(f64::NAN, f);
+            let (position, density, specific_energy, speed, smoothing_length) =
+                match p.id.iter().position(|&id| id == vote.particle_id) {
+                    Some(i) => (
+                        p.position[i].to_array3(),
+                        p.density[i],
+                        p.specific_energy[i],
+                        p.velocity[i].norm(),
+                        p.smoothing_length[i],
+                    ),
+                    None => ([f64::NAN; 3], f64::NAN, f64::NAN, f64::NAN, f64::NAN),
+                };
             let error = SolverError::TimestepCollapse {
                 step,
                 dt: vote.dt,
                 min: floor,
                 id: vote.particle_id,
                 reason: vote.reason,
-                position: i.map_or([f64::NAN; 3], |i| p.position[i].to_array3()),
-                density: at(&|i| p.density[i]),
-                specific_energy: at(&|i| p.specific_energy[i]),
-                speed: at(&|i| p.velocity[i].norm()),
-                smoothing_length: at(&|i| p.smoothing_length[i]),
+                position,
+                density,
+                specific_energy,
+                speed,
+                smoothing_length,
             };
             return Err(self.put_back(s0_state, error));
         }
