@@ -7,7 +7,7 @@ def read(path):
         t, name, nc, data = m.group(1), m.group(2), int(m.group(3)), m.group(4)
         raw = base64.b64decode(data)
         n = struct.unpack('<Q', raw[:8])[0]
-        fmt = {'Float64': 'd', 'UInt16': 'H', 'Int64': 'q', 'UInt8': 'B'}[t]
+        fmt = {'Float64': 'd', 'UInt16': 'H', 'UInt64': 'Q', 'Int64': 'q', 'UInt8': 'B'}[t]
         size = struct.calcsize(fmt)
         vals = struct.unpack('<%d%s' % (n // size, fmt), raw[8:8 + n])
         out[name] = [vals[i*nc:(i+1)*nc] for i in range(len(vals)//nc)] if nc > 1 else list(vals)

@@ -48,6 +48,7 @@ enum Data<'a> {
     Tensor(&'a [[f64; 9]]),
     Int(&'a [i32]),
     UInt16(&'a [u16]),
+    UInt64(&'a [u64]),
 }
 
 impl Data<'_> {
@@ -58,6 +59,7 @@ impl Data<'_> {
             Data::Tensor(a) => a.len(),
             Data::Int(a) => a.len(),
             Data::UInt16(a) => a.len(),
+            Data::UInt64(a) => a.len(),
         }
     }
 
@@ -69,6 +71,7 @@ impl Data<'_> {
             Data::Tensor(_) => ("Float64", 9, 8),
             Data::Int(_) => ("Int32", 1, 4),
             Data::UInt16(_) => ("UInt16", 1, 2),
+            Data::UInt64(_) => ("UInt64", 1, 8),
         }
     }
 
@@ -85,6 +88,7 @@ impl Data<'_> {
                 .try_for_each(|v| w.write_all(&v.to_le_bytes())),
             Data::Int(a) => a.iter().try_for_each(|v| w.write_all(&v.to_le_bytes())),
             Data::UInt16(a) => a.iter().try_for_each(|v| w.write_all(&v.to_le_bytes())),
+            Data::UInt64(a) => a.iter().try_for_each(|v| w.write_all(&v.to_le_bytes())),
         }
     }
 }
@@ -131,6 +135,11 @@ impl<'a> VtuWriter<'a> {
     /// A 16-bit unsigned point-data array (UInt16), e.g. the body id.
     pub fn uint16(&mut self, name: &str, values: &'a [u16]) -> &mut Self {
         self.add(name, Data::UInt16(values))
+    }
+
+    /// A 64-bit unsigned point-data array (UInt64), e.g. the particles' stable ids.
+    pub fn uint64(&mut self, name: &str, values: &'a [u64]) -> &mut Self {
+        self.add(name, Data::UInt64(values))
     }
 
     /// Writes the file at `path` (created or truncated).

@@ -301,6 +301,8 @@ fn bundled_scenes_round_trip() {
                 assert_eq!(scene.bodies, other.bodies, "{name}");
                 assert_eq!(scene.geometry, GeometryKind::Rz);
                 assert_eq!(s.geometry, sph_impact::Geometry::Axisymmetric);
+                // Ejecta 20 mm up fly on (docs/validation.md, "Free flight").
+                assert_eq!(s.free_flight_above, Some(0.02));
             }
             assert_eq!(s.artificial_stress.epsilon, 0.2);
             let m = scene.materials().unwrap();
@@ -403,6 +405,27 @@ fn smoke_scene_runs_end_to_end() {
     let history = std::fs::read_to_string(dir.join("history.csv")).unwrap();
     assert!(history.starts_with("t_s,step,dt_s,beta,"));
     assert_eq!(history.lines().count() as u64, summary.steps + 2);
+    // Every row names the limit that set its step and the particle that set it.
+    let reasons = [
+        "CFL: sound + approach speed",
+        "density change",
+        "acceleration",
+    ];
+    for (k, line) in history.lines().skip(1).enumerate() {
+        let fields: Vec<&str> = line.split(',').collect();
+        assert_eq!(
+            fields.len(),
+            sph_impact::run::HISTORY_COLUMNS.len(),
+            "{line}"
+        );
+        let (reason, id) = (fields[13], fields[14].parse::<u64>().unwrap());
+        if k == 0 {
+            assert_eq!((reason, id), ("none", 0));
+        } else {
+            assert!(reasons.contains(&reason), "{line}");
+            assert!(id < summary.particles as u64, "{line}");
+        }
+    }
     let pvd = std::fs::read_to_string(dir.join("run.pvd")).unwrap();
     assert_eq!(pvd.matches("<DataSet").count(), 5);
     print_result("smoke", &summary);
@@ -673,6 +696,48 @@ fn rz_smoke_scene_runs_end_to_end() {
     let vtu = std::fs::read_to_string(dir.join("snapshots/00002.vtu")).unwrap();
     assert!(vtu.contains("Name=\"deviatoric_stress\""));
     print_result("smoke (rz)", &summary);
+}
+
+/// Free flight (`[solver] free_flight_above`): the jet above the plane leaves the
+/// hydrodynamics, and the run keeps every particle in its outputs and every total.
+#[test]
+fn rz_smoke_scene_with_free_flight() {
+    let text = std::fs::read_to_string(scene_file("smoke_rz.toml")).unwrap();
+    let text = text.replacen("[solver]\n", "[solver]\nfree_flight_above = 0.5e-3\n", 1);
+    assert!(text.contains("free_flight_above"));
+    let scene = Scene::from_toml_str(&text, "smoke_rz.toml").unwrap();
+    assert_eq!(scene.scheme().free_flight_above, Some(0.5e-3));
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("scene-smoke-rz-flight");
+    let _ = std::fs::remove_dir_all(&dir);
+    let options = RunOptions {
+        quiet: true,
+        ..RunOptions::default()
+    };
+    let summary = run(&scene, &dir, &options).unwrap();
+    println!(
+        "in free flight at the end: {} of {} rings",
+        summary.free_flight_particles, summary.particles
+    );
+    assert!(summary.free_flight_particles > 0);
+    let plain = Scene::from_toml_file(scene_file("smoke_rz.toml")).unwrap();
+    let n = plain.check_report(1.0, 1, None).unwrap().particles;
+    assert_eq!(summary.particles, n);
+    // Fewer particle-steps than particles × steps: the flying ones are not stepped.
+    assert!(summary.particle_steps_per_s > 0.0);
+    assert!((summary.last.momentum[2] / summary.initial.momentum[2] - 1.0).abs() < 1e-9);
+    assert!(
+        (summary.beta - summary.beta_target).abs() < 1e-9,
+        "{summary:?}"
+    );
+    assert!(
+        summary.energy_error.abs() < 1e-6,
+        "{}",
+        summary.energy_error
+    );
+    // The last snapshot holds every ring.
+    let vtu = std::fs::read_to_string(dir.join("snapshots/00004.vtu")).unwrap();
+    assert!(vtu.contains(&format!("NumberOfPoints=\"{n}\"")));
+    print_result("smoke (rz, free flight)", &summary);
 }
 
 #[test]

@@ -79,13 +79,15 @@ fn vtu_round_trips_every_array_type() {
     let s = [[1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0, 8.0, 9.0], [-1.0; 9]];
     let label = [7, -3];
     let body = [0u16, 65535];
+    let id = [u64::MAX, 3];
     let mut w = VtuWriter::new(2);
     w.points(&x)
         .scalar("density", &rho)
         .vector("velocity", &v)
         .tensor("stress", &s)
         .int("fragment", &label)
-        .uint16("body <id>", &body);
+        .uint16("body <id>", &body)
+        .uint64("id", &id);
     let dir = scratch("vtu");
     let path = dir.join("step.vtu");
     w.write(&path).unwrap();
@@ -117,6 +119,13 @@ fn vtu_round_trips_every_array_type() {
     let (attrs, d) = array(&xml, "body &lt;id&gt;");
     assert!(attrs.contains("type=\"UInt16\""));
     assert_eq!(d, [0, 0, 255, 255]);
+    let (attrs, d) = array(&xml, "id");
+    assert!(attrs.contains("type=\"UInt64\""));
+    let u64s: Vec<u64> = d
+        .chunks_exact(8)
+        .map(|c| u64::from_le_bytes(c.try_into().unwrap()))
+        .collect();
+    assert_eq!(u64s, id);
     let ids = |b: Vec<u8>| -> Vec<i64> {
         b.chunks_exact(8)
             .map(|c| i64::from_le_bytes(c.try_into().unwrap()))

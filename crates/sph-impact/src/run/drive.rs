@@ -11,6 +11,7 @@ use crate::run::progress::Progress;
 use crate::run::summary::{RunSummary, Totals};
 use crate::run::{RunOptions, finish, snapshot};
 use crate::scene::{BodyInfo, Scene, SceneDimension};
+use crate::solver::StepInfo;
 use sph_diagnostics::Pvd;
 use sph_kernel::KernelChoice;
 use std::path::Path;
@@ -36,6 +37,11 @@ pub(crate) struct Stepped<D: SceneDimension> {
     pub history: History,
     pub initial: Totals,
     pub steps: u64,
+    /// Σ over the steps of the particles stepped (fewer than particles × steps once
+    /// some are in free flight).
+    pub particle_steps: u64,
+    /// Particles in free flight at the end (`SchemeConfig::free_flight_above`).
+    pub free_flight: usize,
     /// Wall time of the stepping alone (s).
     pub stepping: f64,
 }
@@ -84,7 +90,7 @@ impl Job<'_> {
         let mut crater = (f64::NAN, f64::NAN);
         let mut take_snapshot = |sim: &Simulation<D, KernelChoice>,
                                  history: &mut History,
-                                 dt: f64,
+                                 step: Option<&StepInfo>,
                                  crater: &mut (f64, f64)|
          -> Result<(), RunError> {
             let a = Arrays::of(sim, copies);
@@ -94,13 +100,15 @@ impl Job<'_> {
             if let Some(c) = measurer.crater(&a)? {
                 *crater = (c.depth, c.diameter);
             }
-            history.push(row(sim, copies, &measurer.beta(&a)?, *crater, dt, true))?;
+            history.push(row(sim, copies, &measurer.beta(&a)?, *crater, step, true))?;
             Ok(())
         };
-        take_snapshot(&sim, &mut history, 0.0, &mut crater)?;
+        take_snapshot(&sim, &mut history, None, &mut crater)?;
         let mut next_snapshot = interval.min(end_time);
         let t_step = Instant::now();
         let mut steps: u64 = 0;
+        let mut particle_steps: u64 = 0;
+        let mut free_flight = 0;
         let tol = 1e-12 * end_time;
         let failed = |sim: &Simulation<D, KernelChoice>, e: crate::SolverError| RunError::Solver {
             time: sim.state.time,
@@ -109,6 +117,7 @@ impl Job<'_> {
         };
         while sim.state.time < end_time - tol {
             let target = next_snapshot.min(end_time);
+            particle_steps += sim.state.particles.len() as u64;
             let info = match sim.step(target - sim.state.time) {
                 Ok(info) => info,
                 Err(e) => return Err(failed(&sim, e)),
@@ -121,22 +130,30 @@ impl Job<'_> {
                 if let Err(e) = sim.sync_density() {
                     return Err(failed(&sim, e));
                 }
+                // The final state and its diagnostics hold every particle.
+                free_flight = sim.in_free_flight();
+                sim.end_free_flight();
             }
             if at_snapshot || at_end {
-                take_snapshot(&sim, &mut history, info.dt, &mut crater)?;
+                sim.with_free_flight(|sim| {
+                    take_snapshot(sim, &mut history, Some(&info), &mut crater)
+                })?;
                 while next_snapshot <= sim.state.time + tol {
                     next_snapshot += interval;
                 }
             } else if steps.is_multiple_of(history_every) {
-                let a = Arrays::of(&sim, copies);
-                history.push(row(
-                    &sim,
-                    copies,
-                    &measurer.beta(&a)?,
-                    crater,
-                    info.dt,
-                    false,
-                ))?;
+                let r = sim.with_free_flight(|sim| -> Result<HistoryRow, RunError> {
+                    let a = Arrays::of(sim, copies);
+                    Ok(row(
+                        sim,
+                        copies,
+                        &measurer.beta(&a)?,
+                        crater,
+                        Some(&info),
+                        false,
+                    ))
+                })?;
+                history.push(r)?;
             }
             progress.update(sim.state.time, steps, false);
         }
@@ -152,26 +169,31 @@ impl Job<'_> {
                 history,
                 initial,
                 steps,
+                particle_steps,
+                free_flight,
                 stepping,
             },
         )
     }
 }
 
-/// A history row of the current state (totals of the whole bodies).
+/// A history row of the current state (totals of the whole bodies) after the step
+/// `step` (`None` at t = 0).
 fn row<D: SceneDimension>(
     sim: &Simulation<D, KernelChoice>,
     copies: f64,
     beta: &BetaMeasure,
     crater: (f64, f64),
-    dt: f64,
+    step: Option<&StepInfo>,
     crater_measured: bool,
 ) -> HistoryRow {
     let c = Totals::of(sim, copies);
     HistoryRow {
         t: sim.state.time,
         step: sim.state.step,
-        dt,
+        dt: step.map_or(0.0, |s| s.dt),
+        dt_reason: step.map_or("none", |s| s.vote.reason),
+        dt_particle_id: step.map_or(0, |s| s.vote.particle_id),
         beta: beta.beta,
         beta_target: beta.beta_target,
         ejecta_mass: beta.ejecta_mass,

@@ -24,6 +24,8 @@ pub(crate) fn summarise<D: SceneDimension>(
         history,
         initial,
         steps,
+        particle_steps,
+        free_flight,
         stepping,
     } = run;
     let (dir, setup) = (job.dir, &measurer.setup);
@@ -113,7 +115,7 @@ pub(crate) fn summarise<D: SceneDimension>(
         steps,
         end_time_s: job.end_time,
         wall_time_s: 0.0,
-        particle_steps_per_s: steps as f64 * n as f64 / stepping.max(1e-12),
+        particle_steps_per_s: particle_steps as f64 / stepping.max(1e-12),
         threads: job.threads,
         resolution_scale: job.options.resolution_scale,
         version: env!("CARGO_PKG_VERSION").to_owned(),
@@ -131,6 +133,7 @@ pub(crate) fn summarise<D: SceneDimension>(
         timings: sim.timings,
         damage_events: sim.damage_events,
         density_floor_events: sim.density_floor_events,
+        free_flight_particles: free_flight,
     };
     summary.set_beta(&beta);
     summary.wall_time_s = job.wall.elapsed().as_secs_f64();

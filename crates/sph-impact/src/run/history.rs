@@ -1,5 +1,5 @@
 //! `history.csv`: one row every `history_every` steps (and at t = 0 and the end) with
-//! time, step, β, crater size, energies and momentum.
+//! time, step, β, crater size, energies and momentum, and what set the last time step.
 
 use crate::run::error::RunError;
 use std::fs::File;
@@ -7,7 +7,7 @@ use std::io::{BufWriter, Write};
 use std::path::{Path, PathBuf};
 
 /// The columns of `history.csv` (SI units).
-pub const HISTORY_COLUMNS: [&str; 13] = [
+pub const HISTORY_COLUMNS: [&str; 15] = [
     "t_s",
     "step",
     "dt_s",
@@ -21,6 +21,8 @@ pub const HISTORY_COLUMNS: [&str; 13] = [
     "total_J",
     "momentum_z_kg_m_s",
     "crater_measured",
+    "dt_reason",
+    "dt_particle_id",
 ];
 
 /// One row.
@@ -51,6 +53,12 @@ pub struct HistoryRow {
     /// True on rows where the crater was measured (snapshots), false where the row
     /// carries the last measured value.
     pub crater_measured: bool,
+    /// Why the last step had its length: the reason of the smallest time-step vote
+    /// (`crate::TimestepVote`); "none" at t = 0. Contains no comma.
+    pub dt_reason: &'static str,
+    /// Stable id of the particle whose vote set the last step (0 at t = 0); look it up
+    /// in the snapshots' `id` array to see where a run's time step is spent.
+    pub dt_particle_id: u64,
 }
 
 /// The open history file and the rows so far (kept for the plots).
@@ -75,7 +83,7 @@ impl History {
     pub fn push(&mut self, r: HistoryRow) -> Result<(), RunError> {
         writeln!(
             self.out,
-            "{:e},{},{:e},{},{},{:e},{:e},{:e},{:e},{:e},{:e},{:e},{}",
+            "{:e},{},{:e},{},{},{:e},{:e},{:e},{:e},{:e},{:e},{:e},{},{},{}",
             r.t,
             r.step,
             r.dt,
@@ -88,7 +96,9 @@ impl History {
             r.internal,
             r.kinetic + r.internal,
             r.momentum_z,
-            u8::from(r.crater_measured)
+            u8::from(r.crater_measured),
+            r.dt_reason,
+            r.dt_particle_id
         )
         .map_err(|e| RunError::io(&self.path, e))?;
         self.rows.push(r);

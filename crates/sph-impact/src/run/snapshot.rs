@@ -55,7 +55,8 @@ pub(crate) fn write_snapshot<D: SceneDimension>(
         .scalar("specific_energy", &arrays.specific_energy)
         .scalar("mass", &arrays.mass)
         .scalar("smoothing_length", &s.particles.smoothing_length)
-        .uint16("material", &arrays.body);
+        .uint16("material", &arrays.body)
+        .uint64("id", &s.particles.id);
     if !stress.is_empty() {
         w.tensor("deviatoric_stress", &stress);
         w.scalar("plastic_strain", &s.plastic_strain);

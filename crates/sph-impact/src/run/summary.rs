@@ -146,6 +146,9 @@ pub struct RunSummary {
     /// Times a solid particle's density was raised to its floor
     /// (`SchemeConfig::solid_density_floor`).
     pub density_floor_events: u64,
+    /// Particles in free flight at the end (`SchemeConfig::free_flight_above`): out of
+    /// the hydrodynamics, moving at constant velocity; they are in every other output.
+    pub free_flight_particles: usize,
 }
 
 impl RunSummary {

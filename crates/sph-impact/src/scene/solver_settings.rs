@@ -118,6 +118,10 @@ pub struct SolverSettings {
     /// Keep a solid's density above the value at which h reaches its cap.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub solid_density_floor: Option<bool>,
+    /// Height (m, scene z) above which particles moving up and away leave the
+    /// hydrodynamics and fly on at constant velocity (`SchemeConfig::free_flight_above`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub free_flight_above: Option<f64>,
 }
 
 impl SolverSettings {
@@ -154,6 +158,9 @@ impl SolverSettings {
             fragment_density_ratio,
             solid_density_floor
         );
+        if let Some(z) = self.free_flight_above {
+            s.free_flight_above = Some(z);
+        }
         if let Some(v) = self.viscosity {
             s.viscosity.alpha = v.alpha.unwrap_or(s.viscosity.alpha);
             s.viscosity.beta = v.beta.unwrap_or(s.viscosity.beta);

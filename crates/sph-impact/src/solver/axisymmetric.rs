@@ -37,9 +37,11 @@
 //! rim and stopped; down to −2.8 on the projectile's surface in the first 3 µs of the
 //! Al → basalt impact at A_res 1 mm), turning the hoop force around. Summation density
 //! divides Σ m W by the same smoothing of r. The smoothing length follows the area per
-//! particle, h = n_target (m/(ρ r))^(1/2). Totals (`Simulation::conserved`) are per
-//! radian: multiply by 2π for the bodies'. A mirror
-//! ghost of a wall normal to r (a cylinder wall) carries the ring mass of its own radius,
+//! particle, h = n_target (m/(ρ r))^(1/2), with r at least the half-width of the ring's
+//! own section (`ring_area`: with the bare r a ring carried onto the axis had an
+//! unbounded h).
+//! Totals (`Simulation::conserved`) are per radian: multiply by 2π for the bodies'. A
+//! mirror ghost of a wall normal to r (a cylinder wall) carries the ring mass of its own radius,
 //! m r'/r, so it stands for the same area of material as its source. The Monaghan
 //! viscosity and the artificial stress are weighted like the pressure (× r̄/(r_i r_j),
 //! R/r) and have no hoop part. (With R̂ in place of r in those two weights the spherical
@@ -71,24 +73,25 @@ pub(crate) fn radius<V: Vector>(x: V) -> f64 {
     x.component(0).abs()
 }
 
-/// Area mass m/r = ρ A of a particle of ring mass per radian `m` at radius `r` (what the
-/// smoothing length follows).
+/// The (r, z) area of a ring of mass per radian `m` and density `rho` at radius `r`: its
+/// volume per radian over its centroid radius, m/(ρ r), except that the centroid of a
+/// section of width w cannot lie closer to the axis than w/2, so r is taken as at least
+/// (m/(4ρ))^(1/3), where m/(ρ r) = (2r)²; closer in, the area is (2m/ρ)^(2/3), the
+/// same value at the switch. A lattice's first column (r = Δx/2, area Δx²) sits exactly
+/// at the switch, so nothing changes for it. With the bare m/(ρ r) a ring carried onto
+/// the axis had an area, and an h, without bound: in the RZ Sedov blast at 240 across
+/// a first-column ring pressed to r = 1e-4 had h at its cap, 8 times its neighbours',
+/// kicked them, and the run stopped in a runaway (docs/verification.md, RZ Sedov).
 #[inline]
-pub(crate) fn area_mass(m: f64, r: f64) -> f64 {
-    m / r
+pub(crate) fn ring_area(m: f64, r: f64, rho: f64) -> f64 {
+    m / (rho * r.max((m / (4.0 * rho)).cbrt()))
 }
 
-impl Geometry {
-    /// The mass whose ratio to ρ is a particle's kernel measure (length, area or
-    /// volume): its mass in Cartesian runs, the area mass m/r of a ring at `x` in RZ.
-    /// The smoothing length and the solid density floor both follow it.
-    #[inline]
-    pub(crate) fn kernel_mass<V: Vector>(self, m: f64, x: V) -> f64 {
-        match self {
-            Geometry::Cartesian => m,
-            Geometry::Axisymmetric => area_mass(m, radius(x)),
-        }
-    }
+/// The density at which a ring at radius `r` has the area side² ([`ring_area`] solved
+/// for ρ): m/(r side²) while r ≥ side/2, m/((side/2) side²) closer to the axis.
+#[inline]
+pub(crate) fn ring_density_for_area(m: f64, r: f64, side: f64) -> f64 {
+    m / (r.max(0.5 * side) * side * side)
 }
 
 /// The artificial stress' reference spacing Δp of a ring now at radius `r` that was placed
@@ -235,6 +238,32 @@ impl SmoothedRadius {
 mod tests {
     use super::*;
     use sph_kernel::{Kernel, WendlandC2};
+
+    #[test]
+    fn ring_area_is_the_lattice_cell_and_bounded_on_the_axis() {
+        let (dx, rho) = (1e-3, 2876.0);
+        for col in 0..5 {
+            // A lattice ring: mass per radian ρ Δx² r, area Δx² (the first column at
+            // the switch).
+            let r = (col as f64 + 0.5) * dx;
+            let a = ring_area(rho * dx * dx * r, r, rho);
+            assert!((a / (dx * dx) - 1.0).abs() < 1e-12, "{col}: {a}");
+        }
+        // First-column mass: continuous through the switch, bounded on the axis.
+        let m = rho * dx * dx * 0.5 * dx;
+        let at = |r: f64| ring_area(m, r, rho) / (dx * dx);
+        assert!((at(0.5 * dx * (1.0 - 1e-9)) - at(0.5 * dx * (1.0 + 1e-9))).abs() < 1e-8);
+        assert!((at(0.0) - 1.0).abs() < 1e-12 && at(1e-6 * dx) == at(0.0));
+        assert!((at(2.0 * dx) - 0.25).abs() < 1e-12);
+        // The density for an area inverts ring_area on both sides of the switch.
+        for r in [0.0, 0.2 * dx, 0.5 * dx, 3.0 * dx] {
+            for side in [0.5 * dx, dx, 4.0 * dx] {
+                let rho_s = ring_density_for_area(m, r, side);
+                let back = ring_area(m, r, rho_s);
+                assert!((back / (side * side) - 1.0).abs() < 1e-12, "{r} {side}");
+            }
+        }
+    }
 
     #[test]
     fn smoothed_radius_is_r_away_from_the_axis_and_positive_on_it() {

@@ -193,6 +193,15 @@ pub struct SchemeConfig {
     /// problems need their low densities). Each flooring of a particle in a step is
     /// counted in [`crate::Simulation::density_floor_events`].
     pub solid_density_floor: bool,
+    /// Free flight (`None`, the default, disables): a particle above this height in the
+    /// last coordinate (m; z in 3-D and RZ, y in plane 2-D), moving up and away from
+    /// every wall, leaves the hydrodynamics after the step and moves on at constant
+    /// velocity (no gravity or drag; its interactions with other ejecta are dropped). It
+    /// stays in every output and total ([`crate::Simulation::with_free_flight`]). Why:
+    /// in RZ a ring flying outward thins like r^(−1/2) and would set the time step for
+    /// the rest of the run (solver/free_flight.rs).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub free_flight_above: Option<f64>,
 }
 
 impl Default for SchemeConfig {
@@ -228,6 +237,7 @@ impl Default for SchemeConfig {
             dt_floor_fraction: 1e-6,
             fragment_density_ratio: Self::DEFAULT_FRAGMENT_DENSITY_RATIO,
             solid_density_floor: true,
+            free_flight_above: None,
         }
     }
 }
@@ -267,6 +277,11 @@ impl SchemeConfig {
                 self.fragment_density_ratio,
                 "must be in [0, 1)",
             );
+        }
+        if let Some(z) = self.free_flight_above
+            && !z.is_finite()
+        {
+            return bad("free_flight_above", z, "must be a finite height (m)");
         }
         if !(self.cfl > 0.0 && self.cfl <= 1.0) {
             return bad("cfl", self.cfl, "must be in (0, 1]");

@@ -6,6 +6,7 @@ pub mod config;
 mod damage;
 mod derivatives;
 pub mod error;
+mod free_flight;
 pub mod material;
 mod pair_kernel;
 pub mod simulation;

@@ -3,7 +3,7 @@
 
 use crate::solver::axisymmetric::{
     Geometry, HoopInput, SmoothedRadius, add_hoop_terms, hoop_strain_rate, radius,
-    reference_spacing,
+    reference_spacing, ring_area, ring_density_for_area,
 };
 use crate::solver::boundary::Boundary;
 use crate::solver::config::{DensityForm, EnergyForm, SchemeConfig, SmoothingMode};
@@ -16,6 +16,7 @@ use crate::solver::derivatives::{
     GradientSet, PairRates, Rates, gradients, rates, summation_density,
 };
 use crate::solver::error::SolverError;
+use crate::solver::free_flight::{FreeFlight, leaving};
 use crate::solver::material::Material;
 use crate::solver::pair_kernel::{ScalarPairKernel, TensorPairKernel, equivalent_radius};
 use crate::solver::state::{Extended, State};
@@ -133,6 +134,8 @@ pub struct Simulation<D: Dimension, K: Kernel> {
     first_dt: Option<f64>,
     kernel: K,
     search: CellList,
+    /// The particles in free flight (`SchemeConfig::free_flight_above`).
+    flight: FreeFlight<D>,
     /// The midpoint state's storage, kept from step to step and overwritten in place:
     /// allocating it anew between the two stages of every step left the heap
     /// fragmented, resident memory 90 bytes per particle above the live peak (solid3d
@@ -258,6 +261,7 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
             }),
             kernel,
             search: CellList::new(),
+            flight: FreeFlight::default(),
             midpoint: State::default(),
         })
     }
@@ -303,23 +307,79 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
         eos_pass(&self.state.particles, &self.materials)
     }
 
-    /// Mass, momentum and energy totals of the current state.
+    /// Mass, momentum and energy totals of the current state, the particles in free
+    /// flight included.
     pub fn conserved(&self) -> Conserved<D> {
-        let p = &self.state.particles;
         let mut c = Conserved {
             mass: 0.0,
             momentum: D::Vector::ZERO,
             kinetic: 0.0,
             internal: 0.0,
         };
-        for i in 0..p.len() {
-            let m = p.mass[i];
-            c.mass += m;
-            c.momentum += p.velocity[i] * m;
-            c.kinetic += 0.5 * m * p.velocity[i].norm_squared();
-            c.internal += m * p.specific_energy[i];
+        for p in [&self.state.particles, &self.flight.state.particles] {
+            for i in 0..p.len() {
+                let m = p.mass[i];
+                c.mass += m;
+                c.momentum += p.velocity[i] * m;
+                c.kinetic += 0.5 * m * p.velocity[i].norm_squared();
+                c.internal += m * p.specific_energy[i];
+            }
         }
         c
+    }
+
+    /// How many particles are in free flight (`SchemeConfig::free_flight_above`): out
+    /// of [`Self::state`], moving at constant velocity.
+    pub fn in_free_flight(&self) -> usize {
+        self.flight.len()
+    }
+
+    /// Calls `f` with the particles in free flight appended to [`Self::state`] at their
+    /// present positions (after the particles still in the hydrodynamics, in the order
+    /// they left), then takes them out again: how the outputs see every particle.
+    pub fn with_free_flight<R>(&mut self, f: impl FnOnce(&Self) -> R) -> R {
+        if self.flight.len() == 0 {
+            return f(self);
+        }
+        let n = self.state.particles.len();
+        self.join_flight();
+        let r = f(self);
+        self.state.truncate(n);
+        self.held.truncate(n);
+        self.radius0.truncate(n);
+        r
+    }
+
+    /// Puts the particles in free flight back into [`Self::state`] for good (at the end
+    /// of a run, so the final state holds every particle). Steps taken after this let
+    /// them leave again.
+    pub fn end_free_flight(&mut self) {
+        self.join_flight();
+        self.flight = FreeFlight::default();
+    }
+
+    /// Appends the particles in flight to the state (and their held flags and RZ radii).
+    fn join_flight(&mut self) {
+        self.state.append(&mut self.flight.state);
+        if !self.held.is_empty() {
+            // Flags set after the particles left (hold_velocity) do not cover them.
+            if self.flight.held.is_empty() {
+                self.held.resize(self.state.particles.len(), false);
+            } else {
+                self.held.extend_from_slice(&self.flight.held);
+            }
+        }
+        self.radius0.extend_from_slice(&self.flight.radius0);
+    }
+
+    /// A particle's kernel measure at density `rho` (the length, area or volume per
+    /// particle that h follows): m/ρ, in RZ the ring's (r, z) area
+    /// (`axisymmetric::ring_area`).
+    fn kernel_measure(&self, m: f64, x: D::Vector, rho: f64) -> f64 {
+        match self.scheme.geometry {
+            Geometry::Cartesian => m / rho,
+            Geometry::Axisymmetric => ring_area(m, radius(x), rho),
+        }
     }
 
     /// Particle spacing Δx_i = (smallest support semi-axis)/n_target.
@@ -727,6 +787,12 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
         let checked = self.check(&next);
         self.state = next;
         checked?;
+        self.flight.drift(dt);
+        if let Some(z) = self.scheme.free_flight_above {
+            let leave = leaving(&self.state, z, &self.boundaries, &self.held);
+            self.flight
+                .take(&mut self.state, &mut self.held, &mut self.radius0, &leave);
+        }
         self.timings.integration += t1.elapsed().as_secs_f64();
         Ok(StepInfo {
             dt,
@@ -748,8 +814,9 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
         self.floor_density(y);
     }
 
-    /// Raises each solid particle's density to m/(h_max_factor Δp0)^d (area mass in RZ)
-    /// if it fell below, and returns how many were raised; a no-op with
+    /// Raises each solid particle's density to m/(h_max_factor Δp0)^d (in RZ the density
+    /// at which the ring's area is (h_max_factor Δp0)², `ring_density_for_area`) if it
+    /// fell below, and returns how many were raised; a no-op with
     /// `solid_density_floor` off or summation density (never below its self-term). See
     /// [`SchemeConfig::solid_density_floor`].
     fn floor_density(&self, y: &mut State<D>) -> u64 {
@@ -757,10 +824,10 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
             return 0;
         }
         let d = D::DIM as i32;
-        let geometry = self.scheme.geometry;
         let cap = self.scheme.h_max_factor;
         let materials = &self.materials;
         let p = &mut y.particles;
+        let rz = self.scheme.geometry == Geometry::Axisymmetric;
         let (m, x, mat) = (&p.mass, &p.position, &p.material);
         let s0 = &y.spacing0;
         p.density
@@ -770,7 +837,12 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
                 if materials[mat[i] as usize].strength.is_none() {
                     return 0;
                 }
-                let floor = geometry.kernel_mass(m[i], x[i]) / (cap * s0[i]).powi(d);
+                let side = cap * s0[i];
+                let floor = if rz {
+                    ring_density_for_area(m[i], radius(x[i]), side)
+                } else {
+                    m[i] / side.powi(d)
+                };
                 if *rho < floor {
                     *rho = floor;
                     1
@@ -836,16 +908,14 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
                 let (m, rho) = (&p.mass, &p.density);
                 let (s0, cap) = (&y.spacing0, self.scheme.h_max_factor);
                 let x = &p.position;
-                let geometry = self.scheme.geometry;
                 p.smoothing_length
                     .par_iter_mut()
                     .enumerate()
                     .for_each(|(i, h)| {
-                        // The area (or volume) per particle: m/ρ, in RZ (m/r)/ρ.
-                        let mi = geometry.kernel_mass(m[i], x[i]);
+                        // The area (or volume) per particle: m/ρ, in RZ the ring's area.
                         if rho[i] > 0.0 {
-                            *h = (n_target * (mi / rho[i]).powf(1.0 / d))
-                                .min(cap * n_target * s0[i]);
+                            let measure = self.kernel_measure(m[i], x[i], rho[i]);
+                            *h = (n_target * measure.powf(1.0 / d)).min(cap * n_target * s0[i]);
                         }
                     });
             }
@@ -861,8 +931,8 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
                         // mode, with the same cap: a particle expanding into vacuum
                         // would otherwise grow its support without bound.
                         let target = if rho[i] > 0.0 {
-                            let mi = self.scheme.geometry.kernel_mass(m[i], p.position[i]);
-                            (n_target * (mi / rho[i]).powf(1.0 / d)).min(cap * n_target * s0[i])
+                            let measure = self.kernel_measure(m[i], p.position[i], rho[i]);
+                            (n_target * measure.powf(1.0 / d)).min(cap * n_target * s0[i])
                         } else {
                             1.0 / h_src[i].sym_eigen().values[0]
                         };

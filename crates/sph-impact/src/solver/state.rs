@@ -126,6 +126,119 @@ impl<D: Dimension> State<D> {
     }
 }
 
+/// An operation on one per-particle field of two states at a time
+/// ([`State::zip_fields`]): generic over the field's element type.
+trait FieldOp {
+    fn apply<T: Clone>(&mut self, a: &mut Vec<T>, b: &mut Vec<T>);
+}
+
+impl<D: Dimension> State<D> {
+    /// Applies `op` to each per-particle field of `a` with the same field of `b`.
+    /// Destructured so that a field added to the struct fails to compile here until it
+    /// is listed.
+    fn zip_fields(a: &mut State<D>, b: &mut State<D>, op: &mut impl FieldOp) {
+        let State {
+            particles: pa,
+            h_tensor: a_h,
+            spacing0: a_s0,
+            stress: a_s,
+            plastic_strain: a_ep,
+            pseudo_strain: a_pp,
+            plastic_strain_rate: a_epr,
+            damage_state: a_d,
+            damage_tensor: a_dt,
+            damage_index: a_di,
+            time: _,
+            step: _,
+        } = a;
+        let Particles {
+            position: a_x,
+            velocity: a_v,
+            mass: a_m,
+            density: a_rho,
+            specific_energy: a_e,
+            smoothing_length: a_sl,
+            material: a_mat,
+            id: a_id,
+        } = pa;
+        let pb = &mut b.particles;
+        op.apply(a_x, &mut pb.position);
+        op.apply(a_v, &mut pb.velocity);
+        op.apply(a_m, &mut pb.mass);
+        op.apply(a_rho, &mut pb.density);
+        op.apply(a_e, &mut pb.specific_energy);
+        op.apply(a_sl, &mut pb.smoothing_length);
+        op.apply(a_mat, &mut pb.material);
+        op.apply(a_id, &mut pb.id);
+        op.apply(a_h, &mut b.h_tensor);
+        op.apply(a_s0, &mut b.spacing0);
+        op.apply(a_s, &mut b.stress);
+        op.apply(a_ep, &mut b.plastic_strain);
+        op.apply(a_pp, &mut b.pseudo_strain);
+        op.apply(a_epr, &mut b.plastic_strain_rate);
+        op.apply(a_d, &mut b.damage_state);
+        op.apply(a_dt, &mut b.damage_tensor);
+        op.apply(a_di, &mut b.damage_index);
+    }
+
+    /// Moves the particles with `leave[i]` true out of `self` into a new state (same time
+    /// and step), both keeping their order. Every per-particle field moves with its
+    /// particle; fields that are empty (a model not in use) stay empty.
+    pub(crate) fn split_off(&mut self, leave: &[bool]) -> State<D> {
+        struct Split<'l>(&'l [bool]);
+        impl FieldOp for Split<'_> {
+            fn apply<T: Clone>(&mut self, a: &mut Vec<T>, b: &mut Vec<T>) {
+                *b = take_where(a, self.0);
+            }
+        }
+        let mut out = State {
+            time: self.time,
+            step: self.step,
+            ..State::default()
+        };
+        Self::zip_fields(self, &mut out, &mut Split(leave));
+        out
+    }
+
+    /// Appends the particles of `other` (a state [`Self::split_off`] made from this one,
+    /// so the same fields are in use) after `self`'s.
+    pub(crate) fn append(&mut self, other: &mut State<D>) {
+        struct Append;
+        impl FieldOp for Append {
+            fn apply<T: Clone>(&mut self, a: &mut Vec<T>, b: &mut Vec<T>) {
+                a.extend_from_slice(b);
+            }
+        }
+        Self::zip_fields(self, other, &mut Append);
+    }
+
+    /// Keeps the first `n` particles (undoes an [`Self::append`]).
+    pub(crate) fn truncate(&mut self, n: usize) {
+        struct Truncate(usize);
+        impl FieldOp for Truncate {
+            fn apply<T: Clone>(&mut self, a: &mut Vec<T>, _: &mut Vec<T>) {
+                a.truncate(self.0);
+            }
+        }
+        Self::zip_fields(self, &mut State::default(), &mut Truncate(n));
+    }
+}
+
+/// Removes the elements of `v` with `leave[i]` true and returns them, both parts in
+/// order; an empty `v` (a field not in use) gives an empty result.
+pub(crate) fn take_where<T>(v: &mut Vec<T>, leave: &[bool]) -> Vec<T> {
+    if v.is_empty() {
+        return Vec::new();
+    }
+    debug_assert_eq!(v.len(), leave.len());
+    let (mut out, mut keep) = (Vec::new(), Vec::with_capacity(v.len()));
+    for (x, &l) in std::mem::take(v).into_iter().zip(leave) {
+        if l { out.push(x) } else { keep.push(x) }
+    }
+    *v = keep;
+    out
+}
+
 /// Real particles followed by ghosts, with everything a pair term reads.
 #[derive(Clone, Debug, Default)]
 pub(crate) struct Extended<'a, D: Dimension> {
