@@ -87,18 +87,10 @@ impl<D: Dimension> FreeFlight<D> {
             return 0;
         }
         let mut gone = state.split_off(leave);
-        let gone_held = take_where(held, leave);
-        let gone_r0 = take_where(radius0, leave);
-        if self.len() == 0 {
-            self.state = gone;
-            // Empty when no particle is held / not RZ: stays empty.
-            self.held = gone_held;
-            self.radius0 = gone_r0;
-        } else {
-            self.state.append(&mut gone);
-            self.held.extend(gone_held);
-            self.radius0.extend(gone_r0);
-        }
+        // Appending to the empty default works too: fields not in use stay empty.
+        self.state.append(&mut gone);
+        self.held.extend(take_where(held, leave));
+        self.radius0.extend(take_where(radius0, leave));
         self.state.time = state.time;
         self.state.step = state.step;
         n
