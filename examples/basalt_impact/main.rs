@@ -121,6 +121,10 @@ fn print_comparison(s: &RunSummary, e: &sph_examples::Experiment) {
         "  (β from the target's momentum {:.3}; ejecta {:.3e} kg; energy change {:.1e})",
         s.beta_target, s.ejecta_mass_kg, s.energy_error
     );
+    println!(
+        "  (β moved by {} over the second half of the run; the study reads it once settled)",
+        relative(1.0 + s.beta_change_last_half, 1.0)
+    );
 }
 
 fn main() -> ExitCode {

@@ -377,6 +377,7 @@ fn smoke_scene_runs_end_to_end() {
         "crater_depth_m",
         "beta",
         "beta_target",
+        "beta_change_last_half",
         "ejecta_mass_kg",
         "particles",
         "steps",
@@ -388,6 +389,32 @@ fn smoke_scene_runs_end_to_end() {
         assert!(json.get(key).is_some(), "summary.json lacks {key}");
     }
     assert_eq!(json["scene"]["body"][1]["name"], "target");
+    // β's change over the second half is read from the history as written: the row
+    // nearest half the end time against the last row.
+    let tb: Vec<(f64, f64)> = std::fs::read_to_string(dir.join("history.csv"))
+        .unwrap()
+        .lines()
+        .skip(1)
+        .map(|l| {
+            let f: Vec<f64> = l.split(',').take(4).map(|x| x.parse().unwrap()).collect();
+            (f[0], f[3])
+        })
+        .collect();
+    let (t_end, beta_end) = *tb.last().unwrap();
+    let beta_half = tb
+        .iter()
+        .min_by(|a, b| {
+            (a.0 - t_end / 2.0)
+                .abs()
+                .total_cmp(&(b.0 - t_end / 2.0).abs())
+        })
+        .unwrap()
+        .1;
+    assert!(summary.beta_change_last_half.is_finite(), "{summary:?}");
+    assert!(
+        (summary.beta_change_last_half - (beta_end - beta_half) / beta_end).abs() < 1e-12,
+        "{summary:?}"
+    );
     assert_eq!(json["particles"], summary.particles);
     // Momentum is conserved, so both βs agree; energy too (compatible form).
     assert!(

@@ -4,6 +4,7 @@
 use crate::run::arrays::Arrays;
 use crate::run::drive::{Job, Stepped};
 use crate::run::error::RunError;
+use crate::run::history::beta_change_last_half;
 use crate::run::plots;
 use crate::run::summary::{BodyDamageSummary, RunSummary, Totals};
 use crate::scene::SceneDimension;
@@ -107,6 +108,7 @@ pub(crate) fn summarise<D: SceneDimension>(
         rim_height_m: active(c.rim_height),
         beta: f64::NAN,
         beta_target: f64::NAN,
+        beta_change_last_half: f64::NAN,
         ejecta_mass_kg: 0.0,
         ejecta_momentum_z_kg_m_s: 0.0,
         projectile_mass_kg: measurer.projectile_mass,
@@ -136,6 +138,7 @@ pub(crate) fn summarise<D: SceneDimension>(
         free_flight_particles: free_flight,
     };
     summary.set_beta(&beta);
+    summary.beta_change_last_half = beta_change_last_half(&history.rows);
     summary.wall_time_s = job.wall.elapsed().as_secs_f64();
     let path = dir.join("summary.json");
     let text = serde_json::to_string_pretty(&summary).map_err(|e| RunError::io(&path, e))?;

@@ -61,6 +61,26 @@ pub struct HistoryRow {
     pub dt_particle_id: u64,
 }
 
+/// How much β still moved over the second half of a run: (β(t_end) − β(t_end/2))/β(t_end),
+/// with β(t_end/2) read at the row nearest half the last row's time. It is the number to
+/// look at before trusting a run's β: the study reads β at 400 µs, where it has settled
+/// (paper §5). NaN with fewer than two rows or a non-finite β.
+pub fn beta_change_last_half(rows: &[HistoryRow]) -> f64 {
+    let (Some(first), Some(last)) = (rows.first(), rows.last()) else {
+        return f64::NAN;
+    };
+    if rows.len() < 2 || last.t <= first.t {
+        return f64::NAN;
+    }
+    let half = 0.5 * (first.t + last.t);
+    let mid = rows
+        .iter()
+        .min_by(|a, b| (a.t - half).abs().total_cmp(&(b.t - half).abs()))
+        .map_or(f64::NAN, |r| r.beta);
+    // NaN propagates: a run without ejecta diagnostics has β NaN throughout.
+    (last.beta - mid) / last.beta
+}
+
 /// The open history file and the rows so far (kept for the plots).
 pub(crate) struct History {
     path: PathBuf,
@@ -107,5 +127,41 @@ impl History {
 
     pub fn flush(&mut self) -> Result<(), RunError> {
         self.out.flush().map_err(|e| RunError::io(&self.path, e))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn rows(points: &[(f64, f64)]) -> Vec<HistoryRow> {
+        points
+            .iter()
+            .map(|&(t, beta)| HistoryRow {
+                t,
+                beta,
+                ..HistoryRow::default()
+            })
+            .collect()
+    }
+
+    #[test]
+    fn beta_change_reads_the_row_nearest_half_the_end_time() {
+        // β 1.5 at 0, 1.8 at 195 µs, 1.9 at 210 µs, 2.0 at 400 µs: the row nearest
+        // 200 µs is the one at 195 µs, so the change is (2.0 − 1.8)/2.0.
+        let r = rows(&[(0.0, 1.5), (195e-6, 1.8), (210e-6, 1.9), (400e-6, 2.0)]);
+        assert!((beta_change_last_half(&r) - 0.1).abs() < 1e-12);
+        // A flat history reads zero; a falling one is negative.
+        let flat = rows(&[(0.0, 1.0), (1e-4, 1.7), (2e-4, 1.7)]);
+        assert_eq!(beta_change_last_half(&flat), 0.0);
+        let falling = rows(&[(0.0, 1.0), (1e-4, 2.0), (2e-4, 1.6)]);
+        assert!((beta_change_last_half(&falling) + 0.25).abs() < 1e-12);
+    }
+
+    #[test]
+    fn beta_change_is_nan_without_a_history_to_read() {
+        assert!(beta_change_last_half(&[]).is_nan());
+        assert!(beta_change_last_half(&rows(&[(1e-6, 1.2)])).is_nan());
+        assert!(beta_change_last_half(&rows(&[(0.0, f64::NAN), (1e-6, f64::NAN)])).is_nan());
     }
 }

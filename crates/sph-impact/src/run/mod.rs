@@ -29,7 +29,7 @@ mod snapshot;
 mod summary;
 
 pub use error::RunError;
-pub use history::{HISTORY_COLUMNS, HistoryRow};
+pub use history::{HISTORY_COLUMNS, HistoryRow, beta_change_last_half};
 pub use summary::{BodyDamageSummary, RunSummary, Totals};
 
 use crate::scene::{Built, Scene, SceneSimulation};

@@ -94,6 +94,10 @@ pub struct RunSummary {
     pub beta: f64,
     /// β from the target's momentum change (cross-check).
     pub beta_target: f64,
+    /// (β(t_end) − β(t_end/2))/β(t_end) from `history.csv`: how far β still moved over
+    /// the run's second half (`run::beta_change_last_half`); near zero once it has
+    /// settled.
+    pub beta_change_last_half: f64,
     /// Ejecta mass (kg).
     pub ejecta_mass_kg: f64,
     /// Ejecta axial momentum (kg·m/s).
