@@ -62,14 +62,15 @@ pub struct HistoryRow {
 }
 
 /// How much β still moved over the second half of a run: (β(t_end) − β(t_end/2))/β(t_end),
-/// with β(t_end/2) read at the row nearest half the last row's time. It is the number to
-/// look at before trusting a run's β: the study reads β at 400 µs, where it has settled
-/// (paper §5). NaN with fewer than two rows or a non-finite β.
+/// with β(t_end/2) read at the row nearest the middle of the history's time span (t_end/2
+/// for a run from t = 0). It is the number to look at before trusting a run's β: the
+/// study reads β at 400 µs, where it has settled (paper §5). NaN when the history spans
+/// no time (no row, or one) or β is not finite.
 pub fn beta_change_last_half(rows: &[HistoryRow]) -> f64 {
     let (Some(first), Some(last)) = (rows.first(), rows.last()) else {
         return f64::NAN;
     };
-    if rows.len() < 2 || last.t <= first.t {
+    if last.t <= first.t {
         return f64::NAN;
     }
     let half = 0.5 * (first.t + last.t);
