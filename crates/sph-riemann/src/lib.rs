@@ -9,7 +9,7 @@
 //! * [`Limiter`], [`reconstruct`]: limited linear reconstruction along the pair axis.
 //! * [`interface_velocity`]: v* with the damage/material coupling b_ij.
 //! * [`MonaghanViscosity`], [`ArtificialStress`]: the dissipation and tensile-instability
-//!   terms.
+//!   terms; [`balsara_factor`]: the switch that limits the viscosity to compressions.
 //!
 //! ```
 //! use sph_riemann::{SideState, acoustic_star};
@@ -25,6 +25,7 @@
 //! None.
 
 mod artificial_stress;
+mod balsara;
 mod hllc;
 mod interface;
 mod limiter;
@@ -33,6 +34,7 @@ mod viscosity;
 mod wave_speed;
 
 pub use artificial_stress::{ArtificialStress, ArtificialStressForm};
+pub use balsara::{BALSARA_EPSILON, ViscositySwitch, balsara_factor};
 pub use hllc::{RiemannSolver, acoustic_star, hllc_star, hllc_star_with_speeds};
 pub use interface::{InterfaceCoupling, PairInterface, coupling_weight, interface_velocity};
 pub use limiter::{Limiter, reconstruct};

@@ -20,6 +20,10 @@ pub struct MonaghanViscosity {
     pub alpha: f64,
     /// Quadratic coefficient β_Π (the study: 1).
     pub beta: f64,
+    /// The limiter that multiplies Π per pair (the study: none). Scenes:
+    /// `viscosity = { …, switch = "balsara" }`.
+    #[serde(default)]
+    pub switch: crate::ViscositySwitch,
 }
 
 impl Default for MonaghanViscosity {
@@ -27,6 +31,7 @@ impl Default for MonaghanViscosity {
         Self {
             alpha: 1.0,
             beta: 1.0,
+            switch: crate::ViscositySwitch::None,
         }
     }
 }

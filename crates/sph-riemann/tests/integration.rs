@@ -205,6 +205,7 @@ fn viscosity_hand_computed() {
     let visc = MonaghanViscosity {
         alpha: 1.0,
         beta: 1.0,
+        ..MonaghanViscosity::default()
     };
     // Approaching pair: v_ij·x_ij = −1, h̄ = 1: μ = −1/1.01.
     let mu: f64 = -1.0 / 1.01;

@@ -20,7 +20,7 @@ pub fn study_scheme() -> SchemeConfig {
     s
 }
 
-/// `[solver] viscosity = { alpha = …, beta = … }`.
+/// `[solver] viscosity = { alpha = …, beta = …, switch = "none" | "balsara" }`.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct ViscositySettings {
@@ -30,6 +30,9 @@ pub struct ViscositySettings {
     /// Quadratic coefficient β_Π.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub beta: Option<f64>,
+    /// The limiter on Π: `none` (the study) or `balsara`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub switch: Option<sph_riemann::ViscositySwitch>,
 }
 
 /// `[solver] artificial_stress = { epsilon = …, n = …, form = "pressure" | "principal" }`.
@@ -164,6 +167,7 @@ impl SolverSettings {
         if let Some(v) = self.viscosity {
             s.viscosity.alpha = v.alpha.unwrap_or(s.viscosity.alpha);
             s.viscosity.beta = v.beta.unwrap_or(s.viscosity.beta);
+            s.viscosity.switch = v.switch.unwrap_or(s.viscosity.switch);
         }
         if let Some(a) = self.artificial_stress {
             s.artificial_stress.epsilon = a.epsilon.unwrap_or(s.artificial_stress.epsilon);

@@ -210,10 +210,7 @@ impl Default for SchemeConfig {
             kernel: KernelChoice::WendlandC2,
             n_target: 2.5,
             cfl: 0.25,
-            viscosity: MonaghanViscosity {
-                alpha: 1.0,
-                beta: 1.0,
-            },
+            viscosity: MonaghanViscosity::default(),
             viscosity_length_factor: 0.5,
             artificial_stress: ArtificialStress {
                 epsilon: 0.0,

@@ -152,6 +152,40 @@ pub(crate) fn summation_density<D: Dimension, P: PairKernel<D>>(
         .collect()
 }
 
+/// The per-particle factor of the scheme's viscosity switch, for the real particles;
+/// empty when there is no switch. Balsara: |∇·v| and |∇×v| from pass 1's velocity
+/// gradient L (∂v_a/∂x_b), with the hoop rate v_r/r added to the divergence in RZ;
+/// |∇×v| = √2 ‖(L − Lᵀ)/2‖_F.
+fn viscosity_switch_factors<D: Dimension, P: PairKernel<D>>(
+    ext: &Extended<'_, D>,
+    pk: &P,
+    grads: Option<&GradientSet<D>>,
+    scheme: &SchemeConfig,
+) -> Vec<f64> {
+    match scheme.viscosity.switch {
+        sph_riemann::ViscositySwitch::None => Vec::new(),
+        sph_riemann::ViscositySwitch::Balsara => {
+            let gr = grads.expect("the Balsara switch runs pass 1 (need_grads)");
+            let rz = !ext.radius.is_empty();
+            (0..ext.n_real)
+                .into_par_iter()
+                .map(|i| {
+                    let l = &gr.each[i].velocity;
+                    let hoop = if rz {
+                        ext.velocity[i].component(0) / ext.radius[i]
+                    } else {
+                        0.0
+                    };
+                    let div = l.trace() + hoop;
+                    let curl = std::f64::consts::SQRT_2 * l.antisymmetric().frobenius_norm();
+                    let h = scheme.viscosity_length_factor * pk.h(i);
+                    sph_riemann::balsara_factor(div, curl, ext.sound_speed[i], h)
+                })
+                .collect()
+        }
+    }
+}
+
 /// Pass 1.
 pub(crate) fn gradients<D: Dimension, P: PairKernel<D>>(
     ext: &Extended<'_, D>,
@@ -271,6 +305,10 @@ pub(crate) fn rates<D: Dimension, P: PairKernel<D>>(
     let rz = !ext.radius.is_empty();
     let radius = |k: usize| if rz { ext.radius[k] } else { 1.0 };
     let smooth_r = |k: usize| if rz { ext.smoothed_radius[k] } else { 1.0 };
+    // The viscosity switch's factor of each real particle (empty without a switch); a
+    // ghost takes its source's, since |∇·v| and |∇×v| do not change under a mirror.
+    let switch = viscosity_switch_factors(ext, pk, grads, scheme);
+    let switch_of = |k: usize| switch[ext.source[k] as usize];
     // Particle i's rates, the ghosts' part of its dv/dt, and its hoop gauge (1 outside RZ).
     let pair_sums = |i: usize| -> (Rates<D>, D::Vector, f64) {
         let (xi, vi) = (ext.position[i], ext.velocity[i]);
@@ -386,8 +424,11 @@ pub(crate) fn rates<D: Dimension, P: PairKernel<D>>(
             let r_bar = 0.5 * (ri + rj);
             let h_bar = scheme.viscosity_length_factor * 0.5 * (pk.h(i) + pk.h(j));
             // In RZ the viscous pressure is weighted like the pressure: × r̄/(r_i r_j).
-            let pi_ij =
+            let mut pi_ij =
                 visc.pi(vij, r, 0.5 * (rhoi + rhoj), 0.5 * (ci + cj), h_bar) * (r_bar / (ri * rj));
+            if !switch.is_empty() && pi_ij != 0.0 {
+                pi_ij *= 0.5 * (switch_of(i) + switch_of(j));
+            }
             // Artificial stress: m_j f_ij^n (R_i + R_j)·∇_i W (paper §2.3; R from the
             // total stress, repulsive in tension).
             let (a_force, f_astress) = if use_astress {

@@ -529,6 +529,7 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
             || self.scheme.gradient_correction
             || self.scheme.momentum_correction
             || self.scheme.grad_h
+            || self.scheme.viscosity.switch != sph_riemann::ViscositySwitch::None
             || !state.stress.is_empty();
         let correct = self.scheme.gradient_correction;
         let correct_strain = self.scheme.strain_rate_correction && !state.stress.is_empty();

@@ -229,6 +229,7 @@ impl Problem {
             s.viscosity = sph_riemann::MonaghanViscosity {
                 alpha: 0.0,
                 beta: 0.0,
+                ..Default::default()
             };
         }
         s
