@@ -268,6 +268,30 @@ fn other_bad_values() {
     assert!(m.contains("used twice"), "{m}");
 }
 
+/// `[solver] viscosity = { switch = … }` sets the Balsara switch and keeps the study's α
+/// and β; a misspelt switch is named with its key and line.
+#[test]
+fn viscosity_switch_is_read_and_a_bad_one_named() {
+    let scene = Scene::from_toml_str(
+        &format!("{BASE}[solver]\nviscosity = {{ switch = \"balsara\" }}\n"),
+        "scene.toml",
+    )
+    .unwrap();
+    let v = scene.scheme().viscosity;
+    assert_eq!(v.switch, sph_riemann::ViscositySwitch::Balsara);
+    assert_eq!((v.alpha, v.beta), (1.0, 1.0));
+    let plain = Scene::from_toml_str(BASE, "scene.toml").unwrap();
+    assert_eq!(
+        plain.scheme().viscosity.switch,
+        sph_riemann::ViscositySwitch::None
+    );
+    let m = message(&format!(
+        "{BASE}[solver]\nviscosity = {{ switch = \"balsar\" }}\n"
+    ));
+    assert!(m.starts_with("scene.toml:21:"), "{m}");
+    assert!(m.contains("`solver.viscosity.switch`"), "{m}");
+}
+
 #[test]
 fn bundled_scenes_round_trip() {
     for name in [
