@@ -155,7 +155,8 @@ pub(crate) fn summation_density<D: Dimension, P: PairKernel<D>>(
 /// The per-particle factor of the scheme's viscosity switch, for the real particles;
 /// empty when there is no switch. Balsara: |∇·v| and |∇×v| from pass 1's velocity
 /// gradient L (∂v_a/∂x_b), with the hoop rate v_r/r added to the divergence in RZ;
-/// |∇×v| = √2 ‖(L − Lᵀ)/2‖_F.
+/// |∇×v| = √2 ‖(L − Lᵀ)/2‖_F. The length in the noise floor ε c/h is the viscosity's
+/// own (`viscosity_length_factor` × the support radius), the h of Monaghan's μ_ij.
 fn viscosity_switch_factors<D: Dimension, P: PairKernel<D>>(
     ext: &Extended<'_, D>,
     pk: &P,
