@@ -4,7 +4,8 @@
 //! trait: the maximum-tensile-stress model ([`MaxTensileStress`]), Benz–Asphaug
 //! Weibull flaws with crack growth ([`BenzAsphaug`], flaws in a [`FlawSet`] seeded
 //! reproducibly with rand_pcg, optionally continued past the strongest seeded flaw,
-//! [`FlawTail`]), and [`NoDamage`]. Damage weakens tension and the
+//! [`FlawTail`]), and [`NoDamage`]; and, added to either, shear failure from plastic
+//! strain ([`PlasticFailure`], Collins et al. 2004). Damage weakens tension and the
 //! deviatoric stress elsewhere (paper §2, sph-strength); this crate only evolves D.
 //!
 //! All quantities are f64 in SI units, stress and strain tension-positive.
@@ -62,6 +63,7 @@ pub mod flaw_tail;
 pub mod model;
 pub mod none;
 pub mod params;
+pub mod shear_failure;
 pub mod tensile;
 pub mod tensor;
 pub mod weibull;
@@ -79,6 +81,7 @@ pub use model::{
 };
 pub use none::NoDamage;
 pub use params::{NamedWeibull, WeibullParams};
+pub use shear_failure::PlasticFailure;
 pub use tensile::{MaxTensileStress, TensileFailure};
 pub use tensor::{DamageForm, DirectionalGrowth, GrowthOutcome};
 pub use weibull::{FlawSet, min_activation_strain, static_strength};

@@ -185,6 +185,7 @@ fn non_default_options_round_trip() {
             sigma_b: 1e7,
             failure: TensileFailure::Instant,
             crack_speed_fraction: 0.3,
+            shear: Some(sph_damage::PlasticFailure::new(2e-4, 5e-12, 1e8).unwrap()),
         })
         .with_source("test");
     let text = m.to_toml().unwrap();
@@ -290,6 +291,58 @@ cohesion = 30e6
     let e = error_of("name = \"x\"\nbase = \"basalt-studdy\"\n");
     assert!(matches!(e, MaterialError::UnknownName { .. }));
     assert_names(&e, "base", 2);
+}
+
+#[test]
+fn shear_failure_is_added_to_a_base_damage_model_and_checked() {
+    // The study's basalt with Collins et al. (2004) shear failure on top of its flaws.
+    let text = "name = \"x\"\nbase = \"basalt-study\"\n[damage]\nshear_min_strain = 1e-4\n\
+                shear_pressure_slope = 1e-11\nshear_pressure_offset = 3e8\n";
+    let m = MaterialSpec::from_toml_str(text, "shear.toml").unwrap();
+    let b = MaterialSpec::basalt_study();
+    let expected = b
+        .damage
+        .with_shear_failure(sph_damage::PlasticFailure::ROCK_COLLINS2004);
+    assert_eq!(Some(m.damage), expected);
+    assert_eq!(b.damage.shear_failure(), None);
+    // It round-trips, and reaches the solver's material.
+    let back = MaterialSpec::from_toml_str(&m.to_toml().unwrap(), "back.toml").unwrap();
+    assert_eq!(back, m);
+    let solver = m
+        .body_material(&[1e-9; 4], (1, 4), sph_damage::DamageVariable::CubeRoot)
+        .unwrap();
+    assert_eq!(
+        solver.shear_failure,
+        Some(sph_damage::PlasticFailure::ROCK_COLLINS2004)
+    );
+
+    // One key alone: the error names a missing one.
+    let e = error_of("name = \"x\"\nbase = \"basalt-study\"\n[damage]\nshear_min_strain = 1e-4\n");
+    assert!(
+        e.field().is_some_and(|f| f.starts_with("damage.shear_")),
+        "{e}"
+    );
+    // A bad value is named with its key and line.
+    let e = error_of(
+        "name = \"x\"\nbase = \"basalt-study\"\n[damage]\nshear_min_strain = 1e-4\n\
+         shear_pressure_slope = -1e-11\nshear_pressure_offset = 3e8\n",
+    );
+    assert_names(&e, "damage.shear_pressure_slope", 5);
+    // Tensor damage has no scalar D to raise.
+    let e = error_of(
+        "name = \"x\"\nbase = \"basalt-study\"\n[damage]\nform = \"tensor\"\n\
+         shear_min_strain = 1e-4\nshear_pressure_slope = 1e-11\nshear_pressure_offset = 3e8\n",
+    );
+    assert!(e.to_string().contains("scalar"), "{e}");
+    // Without a damage model there is nothing to add it to.
+    let e = error_of(
+        "name = \"x\"\nbase = \"basalt-study\"\n[damage]\nmodel = \"none\"\nshear_min_strain = 1e-4\n",
+    );
+    assert_names(&e, "damage.shear_min_strain", 5);
+    assert_eq!(
+        DamageSpec::None.with_shear_failure(sph_damage::PlasticFailure::ROCK_COLLINS2004),
+        None
+    );
 }
 
 #[test]

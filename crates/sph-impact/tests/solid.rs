@@ -5,7 +5,8 @@
 use sph_core::glam::DVec2;
 use sph_core::{Dim1, Dim2, ParticleInit, Particles};
 use sph_damage::{
-    ActivationStrain, BenzAsphaug, BenzAsphaugParams, MaxTensileStress, WeibullParams,
+    ActivationStrain, BenzAsphaug, BenzAsphaugParams, MaxTensileStress, PlasticFailure,
+    WeibullParams,
 };
 use sph_eos::{LinearElastic, LinearElasticParams};
 use sph_impact::{Material, SchemeConfig, Simulation};
@@ -49,6 +50,17 @@ fn bar(
     strength: VonMises,
     damage: impl sph_damage::DamageModel + 'static,
 ) -> Simulation<Dim1, WendlandC2> {
+    bar_with_shear_failure(n, rate, strength, damage, None)
+}
+
+/// [`bar`], with shear failure added to the bar's damage when `shear` is given.
+fn bar_with_shear_failure(
+    n: usize,
+    rate: f64,
+    strength: VonMises,
+    damage: impl sph_damage::DamageModel + 'static,
+    shear: Option<PlasticFailure>,
+) -> Simulation<Dim1, WendlandC2> {
     let (eos, _) = elastic();
     let dx = 1.0e-3;
     let hold = 5;
@@ -75,7 +87,10 @@ fn bar(
         unbonded_interfaces: false,
         ..Default::default()
     };
-    let bar = Material::solid("bar", eos, strength).with_damage(damage);
+    let mut bar = Material::solid("bar", eos, strength).with_damage(damage);
+    if let Some(law) = shear {
+        bar = bar.with_shear_failure(law);
+    }
     let ends = Material::solid("held ends", eos, strength);
     let mut sim =
         Simulation::new(p, vec![bar, ends], scheme, WendlandC2, Vec::new(), None).unwrap();
@@ -250,6 +265,60 @@ fn pseudo_plastic_strain_grows_through_yield_and_activates_flaws_in_compression(
         stress_form.damage().iter().all(|&x| x == 0.0),
         "but not on the stress"
     );
+}
+
+/// Shear failure (sph_damage::shear_failure) in a bar squeezed past yield: below the
+/// transition pressure each particle's D is its plastic strain over ε_fb, the sum of
+/// the increments dε_p/ε_f(P); without the law, and in tension-only damage that never
+/// fails, D stays 0.
+#[test]
+fn shear_failure_damages_a_squeezed_bar_by_its_plastic_strain() {
+    let (n, rate, steps) = (20, -2000.0, 40);
+    let yielding = VonMises::new(VonMisesParams {
+        yield_strength: 50.0e6,
+        shear_modulus: SHEAR,
+        hardening: None,
+    })
+    .unwrap();
+    let never = || MaxTensileStress::new(1.0e12).unwrap();
+    // ε_f = 1e-2 up to 2 GPa, far above this bar's pressure.
+    let law = PlasticFailure::new(1.0e-2, 1.0e-11, 1.0e9).unwrap();
+    let run = |shear| {
+        let mut sim = bar_with_shear_failure(n, rate, yielding, never(), shear);
+        for _ in 0..steps {
+            sim.step(f64::INFINITY).unwrap();
+        }
+        sim
+    };
+    let plain = run(None);
+    assert!(plain.damage().iter().all(|&d| d == 0.0));
+    assert_eq!(plain.damage_events.shear_raised, 0);
+    let sheared = run(Some(law));
+    let (p, _) = sheared.pressure_and_sound_speed();
+    let d = sheared.damage();
+    let mut checked = 0;
+    for i in 0..sheared.state.particles.len() {
+        if sheared.state.particles.position[i].abs() > 5.0e-3 {
+            continue;
+        }
+        let ep = sheared.state.plastic_strain[i];
+        assert!(p[i] > 0.0 && p[i] < 2.0e9, "pressure {}", p[i]);
+        assert!(ep > 0.0, "the bar yields: ε_p {ep}");
+        assert!(
+            (d[i] - (ep / 1.0e-2).min(1.0)).abs() < 1e-9,
+            "D {} against ε_p/ε_fb {}",
+            d[i],
+            ep / 1.0e-2
+        );
+        checked += 1;
+    }
+    println!(
+        "shear failure: {checked} middle particles, D = ε_p/ε_fb up to {:.3e}; {} updates",
+        d.iter().cloned().fold(0.0, f64::max),
+        sheared.damage_events.shear_raised
+    );
+    assert!(checked >= 8);
+    assert!(sheared.damage_events.shear_raised > 0);
 }
 
 /// A 2-D elastic block with Benz–Asphaug flaws, the tensor artificial stress, expanding
@@ -570,19 +639,24 @@ fn damage_without_strength_is_an_error_naming_the_material() {
             material: 0,
         });
     }
-    let m = Material::fluid("water-ish", eos).with_damage(MaxTensileStress::new(1e6).unwrap());
-    let err = Simulation::new(
-        p.clone(),
-        vec![m],
-        SchemeConfig::default(),
-        WendlandC2,
-        Vec::new(),
-        None,
-    )
-    .err()
-    .expect("must fail");
-    assert!(err.to_string().contains("water-ish"), "{err}");
-    assert!(err.to_string().contains("strength"), "{err}");
+    // The error of setting up these particles with one material.
+    let refused = |m: Material| {
+        Simulation::new(
+            p.clone(),
+            vec![m],
+            SchemeConfig::default(),
+            WendlandC2,
+            Vec::new(),
+            None,
+        )
+        .err()
+        .expect("must fail")
+        .to_string()
+    };
+    let err =
+        refused(Material::fluid("water-ish", eos).with_damage(MaxTensileStress::new(1e6).unwrap()));
+    assert!(err.contains("water-ish"), "{err}");
+    assert!(err.contains("strength"), "{err}");
     // A flaw set seeded for another particle count is refused too.
     let (eos, strength) = elastic();
     let flaws = BenzAsphaug::seed(
@@ -591,17 +665,28 @@ fn damage_without_strength_is_an_error_naming_the_material() {
         1e-6,
     )
     .unwrap();
-    let err = Simulation::new(
-        p,
-        vec![Material::solid("rock", eos, strength).with_damage(flaws)],
-        SchemeConfig::default(),
-        WendlandC2,
-        Vec::new(),
-        None,
+    let err = refused(Material::solid("rock", eos, strength).with_damage(flaws));
+    assert!(err.contains("4 particles"), "{err}");
+    // Shear failure needs a scalar D to raise: without a damage model, or with a tensor,
+    // the set-up is refused, naming the material.
+    let law = PlasticFailure::ROCK_COLLINS2004;
+    let tensor = BenzAsphaug::seed(
+        BenzAsphaugParams::new(WeibullParams::BASALT_BA99, 1)
+            .with_form(sph_damage::DamageForm::Tensor),
+        4,
+        1e-6,
     )
-    .err()
-    .expect("must fail");
-    assert!(err.to_string().contains("4 particles"), "{err}");
+    .unwrap();
+    for m in [
+        Material::solid("bare rock", eos, strength).with_shear_failure(law),
+        Material::solid("bare rock", eos, strength)
+            .with_damage(tensor)
+            .with_shear_failure(law),
+    ] {
+        let err = refused(m);
+        assert!(err.contains("bare rock"), "{err}");
+        assert!(err.contains("shear failure"), "{err}");
+    }
 }
 
 // Long verification runs (docs/verification.md); run them with

@@ -13,7 +13,7 @@ use crate::materials::sections::{
 use crate::materials::strength_choice::StrengthChoice;
 use sph_damage::{
     ActivationStrain, CRACK_SPEED_FRACTION_BA94, DamageError, DamageForm, FlawTail, GrowthLaw,
-    TensileFailure,
+    PlasticFailure, TensileFailure,
 };
 use sph_eos::{
     EosError, IdealGas, IdealGasParams, LinearElastic, LinearElasticParams, MieGruneisen,
@@ -112,7 +112,14 @@ pub(crate) const DAMAGE_MODELS: [(&str, &[&str]); 3] = [
     ("none", &[]),
     (
         "max-tensile-stress",
-        &["sigma_b", "failure", "crack_speed_fraction"],
+        &[
+            "sigma_b",
+            "failure",
+            "crack_speed_fraction",
+            "shear_min_strain",
+            "shear_pressure_slope",
+            "shear_pressure_offset",
+        ],
     ),
     (
         "benz-asphaug",
@@ -124,8 +131,18 @@ pub(crate) const DAMAGE_MODELS: [(&str, &[&str]); 3] = [
             "tail",
             "strain",
             "form",
+            "shear_min_strain",
+            "shear_pressure_slope",
+            "shear_pressure_offset",
         ],
     ),
+];
+
+/// The keys of shear failure (sph_damage::shear_failure), all three or none.
+const SHEAR_KEYS: &[&str] = &[
+    "shear_min_strain",
+    "shear_pressure_slope",
+    "shear_pressure_offset",
 ];
 
 /// Keys of the thermal data.
@@ -565,6 +582,7 @@ pub(crate) fn build_damage(sec: &Section, cx: &Cx) -> Result<DamageSpec, Materia
     let fraction = cx
         .num(sec, "crack_speed_fraction")?
         .unwrap_or(CRACK_SPEED_FRACTION_BA94);
+    let shear = build_shear_failure(sec, cx)?;
     let spec = match model {
         "none" => DamageSpec::None,
         "max-tensile-stress" => DamageSpec::MaxTensileStress {
@@ -573,6 +591,7 @@ pub(crate) fn build_damage(sec: &Section, cx: &Cx) -> Result<DamageSpec, Materia
                 .option(sec, "failure", &TENSILE_FAILURES)?
                 .unwrap_or(TensileFailure::default()),
             crack_speed_fraction: fraction,
+            shear,
         },
         _ => DamageSpec::BenzAsphaug {
             k: cx.req(sec, "k", &keys[..2])?,
@@ -590,10 +609,42 @@ pub(crate) fn build_damage(sec: &Section, cx: &Cx) -> Result<DamageSpec, Materia
             form: cx
                 .option(sec, "form", &DAMAGE_FORMS)?
                 .unwrap_or(DamageForm::default()),
+            shear,
         },
     };
     spec.validate().map_err(|e| cx.damage_error(sec, e))?;
     Ok(spec)
+}
+
+/// Shear failure from the section's `shear_*` keys: none without them, all three
+/// needed once one is given; each value checked by sph-damage, the error naming its key.
+fn build_shear_failure(sec: &Section, cx: &Cx) -> Result<Option<PlasticFailure>, MaterialError> {
+    if SHEAR_KEYS.iter().all(|k| sec.get(k).is_none()) {
+        return Ok(None);
+    }
+    let r = |k| cx.req(sec, k, SHEAR_KEYS);
+    let (eps, slope, offset) = (
+        r("shear_min_strain")?,
+        r("shear_pressure_slope")?,
+        r("shear_pressure_offset")?,
+    );
+    PlasticFailure::new(eps, slope, offset)
+        .map(Some)
+        .map_err(|e| match e {
+            DamageError::Parameter {
+                field,
+                value,
+                reason,
+            } => {
+                let key = match field {
+                    "min_strain" => "shear_min_strain",
+                    "pressure_slope" => "shear_pressure_slope",
+                    _ => "shear_pressure_offset",
+                };
+                cx.invalid(sec, key, value, reason)
+            }
+            other => cx.damage_error(sec, other),
+        })
 }
 
 /// The thermal model of a section.

@@ -6,7 +6,7 @@
 use sph_damage::{
     ActivationStrain, BenzAsphaug, BenzAsphaugParams, BuiltinDamage, CRACK_SPEED_FRACTION_BA94,
     DamageError, DamageForm, DamageVariable, FlawTail, GrowthLaw, MaxTensileStress, NoDamage,
-    TensileFailure, WeibullParams,
+    PlasticFailure, TensileFailure, WeibullParams,
 };
 
 /// The damage model of a material (paper §3.3).
@@ -23,6 +23,9 @@ pub enum DamageSpec {
         failure: TensileFailure,
         /// c_g / c_L in (0, 1] (0.4, Benz & Asphaug 1994, for crack growth).
         crack_speed_fraction: f64,
+        /// Shear failure from plastic strain added to the same D
+        /// (sph_damage::shear_failure), or none.
+        shear: Option<PlasticFailure>,
     },
     /// Benz–Asphaug Weibull flaws n(ε) = k ε^m per unit volume with crack growth (Benz &
     /// Asphaug 1994, Icarus 107:98).
@@ -41,6 +44,9 @@ pub enum DamageSpec {
         strain: ActivationStrain,
         /// Scalar or tensor damage (sph_damage::tensor).
         form: DamageForm,
+        /// Shear failure from plastic strain added to the same D
+        /// (sph_damage::shear_failure; scalar form only), or none.
+        shear: Option<PlasticFailure>,
     },
 }
 
@@ -51,6 +57,7 @@ impl DamageSpec {
             sigma_b,
             failure: TensileFailure::default(),
             crack_speed_fraction: CRACK_SPEED_FRACTION_BA94,
+            shear: None,
         }
     }
 
@@ -67,12 +74,35 @@ impl DamageSpec {
             tail: FlawTail::default(),
             strain: ActivationStrain::default(),
             form: DamageForm::default(),
+            shear: None,
         }
     }
 
     /// Benz–Asphaug from a named Weibull set (e.g. [`WeibullParams::BASALT_STUDY`]).
     pub fn benz_asphaug_weibull(weibull: WeibullParams) -> Self {
         Self::benz_asphaug(weibull.k(), weibull.m())
+    }
+
+    /// The same model with shear failure added (Collins et al. 2004;
+    /// sph_damage::shear_failure); `None` for [`DamageSpec::None`], which has no damage
+    /// for it to raise.
+    pub fn with_shear_failure(self, law: PlasticFailure) -> Option<Self> {
+        let mut out = self;
+        match &mut out {
+            Self::None => return None,
+            Self::MaxTensileStress { shear, .. } | Self::BenzAsphaug { shear, .. } => {
+                *shear = Some(law)
+            }
+        }
+        Some(out)
+    }
+
+    /// The shear-failure law, if the model has one.
+    pub fn shear_failure(&self) -> Option<PlasticFailure> {
+        match *self {
+            Self::None => None,
+            Self::MaxTensileStress { shear, .. } | Self::BenzAsphaug { shear, .. } => shear,
+        }
     }
 
     /// Model name as in material files: `none`, `max-tensile-stress`, `benz-asphaug`.
@@ -93,6 +123,7 @@ impl DamageSpec {
                 sigma_b,
                 failure,
                 crack_speed_fraction,
+                ..
             } => MaxTensileStress::new(sigma_b)?
                 .with_failure(failure)
                 .with_crack_speed_fraction(crack_speed_fraction)
@@ -101,8 +132,17 @@ impl DamageSpec {
                 k,
                 m,
                 crack_speed_fraction,
+                form,
+                shear,
                 ..
             } => {
+                if let (DamageForm::Tensor, Some(law)) = (form, shear) {
+                    return Err(DamageError::Parameter {
+                        field: "shear_min_strain",
+                        value: law.min_strain(),
+                        reason: "shear failure raises a scalar damage: it needs form = \"scalar\"",
+                    });
+                }
                 let w = WeibullParams::new(k, m)?;
                 BenzAsphaugParams::new(w, 0)
                     .with_crack_speed_fraction(crack_speed_fraction)
@@ -155,6 +195,7 @@ impl DamageSpec {
                 sigma_b,
                 failure,
                 crack_speed_fraction,
+                ..
             } => Ok(BuiltinDamage::MaxTensileStress(
                 MaxTensileStress::new(sigma_b)?
                     .with_failure(failure)
@@ -168,6 +209,7 @@ impl DamageSpec {
                 tail,
                 strain,
                 form,
+                ..
             } => {
                 let params = BenzAsphaugParams::new(WeibullParams::new(k, m)?, seed)
                     .with_crack_speed_fraction(crack_speed_fraction)?

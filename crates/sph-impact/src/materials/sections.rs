@@ -255,12 +255,25 @@ pub(crate) fn strength_section(strength: &StrengthChoice) -> Option<Section> {
 
 /// The damage model's parameters.
 pub(crate) fn damage_section(damage: &DamageSpec) -> Section {
+    let sec = damage_model_section(damage);
+    match damage.shear_failure() {
+        Some(law) => sec
+            .num("shear_min_strain", law.min_strain())
+            .num("shear_pressure_slope", law.pressure_slope())
+            .num("shear_pressure_offset", law.pressure_offset()),
+        None => sec,
+    }
+}
+
+/// The damage model's own parameters (without shear failure).
+fn damage_model_section(damage: &DamageSpec) -> Section {
     match *damage {
         DamageSpec::None => Section::new(Some("none")),
         DamageSpec::MaxTensileStress {
             sigma_b,
             failure,
             crack_speed_fraction,
+            ..
         } => Section::new(Some("max-tensile-stress"))
             .num("sigma_b", sigma_b)
             .name("failure", name_of(&TENSILE_FAILURES, failure))
@@ -273,6 +286,7 @@ pub(crate) fn damage_section(damage: &DamageSpec) -> Section {
             tail,
             strain,
             form,
+            ..
         } => Section::new(Some("benz-asphaug"))
             .num("k", k)
             .num("m", m)

@@ -167,6 +167,7 @@ impl MaterialSpec {
             strength: None,
             thermal: None,
             damage: None,
+            shear_failure: None,
         }
     }
 
@@ -189,6 +190,7 @@ impl MaterialSpec {
                 variable,
                 dealt_over,
             )?));
+            m.shear_failure = self.damage.shear_failure();
         }
         Ok(m)
     }
@@ -208,6 +210,7 @@ impl MaterialSpec {
             thermal: self.thermal,
             // Damage belongs to a body (its flaws): see `DamageSpec::build`.
             damage: None,
+            shear_failure: None,
         }
     }
 

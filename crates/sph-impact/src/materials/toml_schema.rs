@@ -143,6 +143,9 @@ section_table!(
         tail => "tail",
         strain => "strain",
         form => "form",
+        shear_min_strain => "shear_min_strain",
+        shear_pressure_slope => "shear_pressure_slope",
+        shear_pressure_offset => "shear_pressure_offset",
     }
 );
 

@@ -265,6 +265,12 @@ pub struct DamageEvents {
     /// Tensor-damage updates whose eigenvalues had to be brought back into [0, 1]
     /// (growth along a direction oblique to earlier damage, or the rotation's round-off).
     pub tensor_rebounded: u64,
+    /// Updates in which shear failure raised D (particle-steps; sph_damage::shear_failure).
+    #[serde(default)]
+    pub shear_raised: u64,
+    /// Particles that shear failure brought to D = 1 (each once: D = 1 stays).
+    #[serde(default)]
+    pub shear_failed: u64,
 }
 
 impl DamageEvents {
@@ -274,7 +280,56 @@ impl DamageEvents {
         self.capped_at_max += other.capped_at_max;
         self.fragmented += other.fragmented;
         self.tensor_rebounded += other.tensor_rebounded;
+        self.shear_raised += other.shear_raised;
+        self.shear_failed += other.shear_failed;
     }
+}
+
+/// Shear failure (sph_damage::shear_failure; Collins et al. 2004): D ← min(1, D +
+/// Δε_p/ε_f(P)) for the particles of materials with a [`sph_damage::PlasticFailure`] law, where Δε_p
+/// is the plastic strain `y` gained since `plastic_strain_0` (the start of the update)
+/// and P the pressure of the stage whose rates made it. Called after
+/// [`advance_damage`], which integrates the tensile part from the same start, so the
+/// two add. Returns the counts of raised and newly whole-damaged particles.
+pub(crate) fn add_shear_damage<D: Dimension>(
+    y: &mut State<D>,
+    plastic_strain_0: &[f64],
+    pressure: &[f64],
+    materials: &[Material],
+) -> DamageEvents {
+    let mut events = DamageEvents::default();
+    if y.damage_state.is_empty() || materials.iter().all(|m| m.shear_failure.is_none()) {
+        return events;
+    }
+    let p = &y.particles;
+    let raised: Vec<Option<(f64, bool)>> = (0..p.len())
+        .into_par_iter()
+        .map(|i| {
+            let mat = &materials[p.material[i] as usize];
+            let (Some(law), Some(model)) = (&mat.shear_failure, &mat.damage) else {
+                return None;
+            };
+            let dep = y.plastic_strain[i] - plastic_strain_0[i];
+            if dep <= 0.0 {
+                return None;
+            }
+            let variable = model.variable();
+            let d0 = variable.to_damage(y.damage_state[i]);
+            if d0 >= 1.0 {
+                return None;
+            }
+            let d1 = (d0 + law.damage_increment(dep, pressure[i])).min(1.0);
+            Some((variable.from_damage(d1), d1 >= 1.0))
+        })
+        .collect();
+    for (i, r) in raised.into_iter().enumerate() {
+        if let Some((s, whole)) = r {
+            y.damage_state[i] = s;
+            events.shear_raised += 1;
+            events.shear_failed += u64::from(whole);
+        }
+    }
+    events
 }
 
 /// The density below which each material's particles are fragmented: `ratio` × the
@@ -451,5 +506,35 @@ mod tests {
         let s0 = y.damage_state.clone();
         let ev = advance_damage(&mut y, &s0, &[], &materials, &off, &rates, &[], 1e-9);
         assert_eq!((ev.fragmented, y.damage_state[1]), (0, 0.3));
+    }
+
+    #[test]
+    fn shear_failure_adds_plastic_strain_over_failure_strain_up_to_whole_damage() {
+        let (mut y, mut materials) = expanded_rock();
+        let law = sph_damage::PlasticFailure::ROCK_COLLINS2004;
+        let variable = materials[0].damage.as_ref().unwrap().variable();
+        let d0 = variable.to_damage(0.3);
+        let start = vec![1.0e-3, 0.0, 0.0];
+        y.plastic_strain = vec![1.0e-3 + 5.0e-5, 2.0e-4, 1.0e-3];
+        // Without a law nothing changes.
+        let before = y.damage_state.clone();
+        let ev = add_shear_damage(&mut y, &start, &[0.0; 3], &materials);
+        assert_eq!(
+            (y.damage_state.clone(), ev),
+            (before, DamageEvents::default())
+        );
+        materials[0] = materials[0].clone().with_shear_failure(law);
+        // At 1.3 GPa ε_f = 0.01: Δε_p = 5e-5 adds 0.005; at 0 Pa ε_f = 1e-4, so 2e-4 breaks
+        // the second particle; the third is of a material without damage.
+        let ev = add_shear_damage(&mut y, &start, &[1.3e9, 0.0, 0.0], &materials);
+        let d = |s: f64| variable.to_damage(s);
+        assert!((d(y.damage_state[0]) - (d0 + 0.005)).abs() < 1e-12);
+        assert_eq!(d(y.damage_state[1]), 1.0);
+        assert_eq!(y.damage_state[2], 0.0);
+        assert_eq!((ev.shear_raised, ev.shear_failed), (2, 1));
+        // No new plastic strain, no change; a whole particle is not counted again.
+        let start = y.plastic_strain.clone();
+        let again = add_shear_damage(&mut y, &start, &[0.0; 3], &materials);
+        assert_eq!(again, DamageEvents::default());
     }
 }

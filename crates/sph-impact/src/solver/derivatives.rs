@@ -154,7 +154,10 @@ pub(crate) fn summation_density<D: Dimension, P: PairKernel<D>>(
 
 /// The per-particle factor of the scheme's viscosity switch, for the real particles;
 /// empty when there is no switch. Balsara: |∇·v| and |∇×v| from pass 1's velocity
-/// gradient L (∂v_a/∂x_b), with the hoop rate v_r/r added to the divergence in RZ;
+/// gradient L (∂v_a/∂x_b) that drives the deviatoric stress (the linearly corrected
+/// L M⁻¹ where `strain_rate_correction` acts, exact for a linear flow also at a free
+/// surface, where the raw sums read a spurious divergence; the raw L in a run without
+/// strength), with the hoop rate v_r/r added to the divergence in RZ;
 /// |∇×v| = √2 ‖(L − Lᵀ)/2‖_F. The length in the noise floor ε c/h is the viscosity's
 /// own (`viscosity_length_factor` × the support radius), the h of Monaghan's μ_ij.
 fn viscosity_switch_factors<D: Dimension, P: PairKernel<D>>(
@@ -171,7 +174,7 @@ fn viscosity_switch_factors<D: Dimension, P: PairKernel<D>>(
             (0..ext.n_real)
                 .into_par_iter()
                 .map(|i| {
-                    let l = &gr.each[i].velocity;
+                    let l = &gr.each[i].strain_velocity;
                     let hoop = if rz {
                         ext.velocity[i].component(0) / ext.radius[i]
                     } else {

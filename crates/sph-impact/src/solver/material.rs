@@ -1,6 +1,6 @@
 //! The material table the solver reads: one entry per material id.
 
-use sph_damage::DamageModel;
+use sph_damage::{DamageModel, PlasticFailure};
 use sph_eos::{EquationOfState, ThermalModel};
 use sph_strength::StrengthModel;
 use std::sync::Arc;
@@ -25,6 +25,9 @@ pub struct Material {
     pub thermal: Option<ThermalModel>,
     /// Damage model (paper §3.3); `None` for none. Only solids can be damaged.
     pub damage: Option<Arc<dyn DamageModel>>,
+    /// Shear failure (sph_damage::shear_failure): plastic strain adds dε_p/ε_f(P) to the
+    /// damage. Needs a scalar damage model, whose D it raises; `None` for none.
+    pub shear_failure: Option<PlasticFailure>,
 }
 
 impl Material {
@@ -36,6 +39,7 @@ impl Material {
             strength: None,
             thermal: None,
             damage: None,
+            shear_failure: None,
         }
     }
 
@@ -54,12 +58,20 @@ impl Material {
             strength,
             thermal: None,
             damage: None,
+            shear_failure: None,
         }
     }
 
     /// Adds a damage model.
     pub fn with_damage(mut self, damage: impl DamageModel + 'static) -> Self {
         self.damage = Some(Arc::new(damage));
+        self
+    }
+
+    /// Adds shear failure (needs a scalar damage model: [`crate::Simulation::new`]
+    /// rejects it otherwise).
+    pub fn with_shear_failure(mut self, law: PlasticFailure) -> Self {
+        self.shear_failure = Some(law);
         self
     }
 

@@ -9,8 +9,8 @@ use crate::solver::boundary::Boundary;
 use crate::solver::config::{DensityForm, EnergyForm, SchemeConfig, SmoothingMode};
 use crate::solver::damage::{
     DamageEvents, DamageRate, DamageStageInput, TensorRate, activates_on_pseudo_strain,
-    advance_damage, damage_of, damage_rates, damaged_pressure, fragment_densities,
-    has_tensor_damage, tensor_damage_rates,
+    add_shear_damage, advance_damage, damage_of, damage_rates, damaged_pressure,
+    fragment_densities, has_tensor_damage, tensor_damage_rates,
 };
 use crate::solver::derivatives::{
     GradientSet, PairRates, Rates, gradients, rates, summation_density,
@@ -27,6 +27,7 @@ use sph_core::{
     CellList, Dimension, NeighborList, NeighborSearch, Particles, ScalarSupport, Tensor,
     TensorSupport, Vector,
 };
+use sph_damage::DamageForm;
 use sph_kernel::Kernel;
 use std::time::Instant;
 
@@ -723,6 +724,12 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
                 &s0.tensor_rates,
                 0.5 * dt,
             );
+            add_shear_damage(
+                &mut half,
+                &s0_state.plastic_strain,
+                &s0.pressure,
+                &self.materials,
+            );
         }
         // The first stage's rates are spent: free them before the second stage allocates
         // its own (peak memory per particle).
@@ -736,6 +743,13 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
         };
         let t1 = Instant::now();
         let mut next = s0_state;
+        // The step's start plastic strain, for shear failure's Δε_p (only when in use).
+        let shear = self.materials.iter().any(|m| m.shear_failure.is_some());
+        let plastic_strain_0 = if shear {
+            next.plastic_strain.clone()
+        } else {
+            Vec::new()
+        };
         // x_{n+1} = x_n + dt v_{1/2}; the other fields with the midpoint rates.
         self.advance_with_velocity(&mut next, &half.particles.velocity, &s1, dt, &half);
         self.midpoint = half;
@@ -754,6 +768,11 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
                 dt,
             );
             self.damage_events.add(ev);
+            if shear {
+                let ev =
+                    add_shear_damage(&mut next, &plastic_strain_0, &s1.pressure, &self.materials);
+                self.damage_events.add(ev);
+            }
         }
         // The midpoint stage's ghost forces act over the whole step (v_{n+1} = v_n + dt a_½).
         let m = &next.particles.mass;
@@ -1130,6 +1149,21 @@ fn damage_setup<D: Dimension>(
     particles: &Particles<D>,
     materials: &[Material],
 ) -> Result<(Vec<f64>, Vec<u32>), SolverError> {
+    for (m, mat) in materials.iter().enumerate() {
+        // Shear failure raises the scalar D of a damage model; without one (or with a
+        // tensor) there is no D for it to raise.
+        let scalar = mat
+            .damage
+            .as_ref()
+            .is_some_and(|d| d.form() == DamageForm::Scalar);
+        if mat.shear_failure.is_some() && !scalar {
+            return Err(SolverError::Material(format!(
+                "material {m} ({}): shear failure needs a scalar damage model \
+                 (max-tensile-stress or benz-asphaug with form = \"scalar\")",
+                mat.name
+            )));
+        }
+    }
     if materials.iter().all(|m| m.damage.is_none()) {
         return Ok((Vec::new(), Vec::new()));
     }
