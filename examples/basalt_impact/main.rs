@@ -118,8 +118,9 @@ fn print_comparison(s: &RunSummary, e: &sph_examples::Experiment) {
         println!("  {name:<22} {run:>10} {exp:>11} {err:>10} {study:>14}");
     }
     println!(
-        "  (β from the target's momentum {:.3}; ejecta {:.3e} kg; energy change {:.1e})",
-        s.beta_target, s.ejecta_mass_kg, s.energy_error
+        "  (β from the target's momentum {:.3}; as the experiment's pendulum sees it, with \
+         escaping projectile debris, {:.3}; ejecta {:.3e} kg; energy change {:.1e})",
+        s.beta_target, s.beta_pendulum, s.ejecta_mass_kg, s.energy_error
     );
     println!(
         "  (β moved by {} over the second half of the run; the study reads it once settled)",

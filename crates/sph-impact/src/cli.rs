@@ -221,8 +221,9 @@ pub fn run_scene(
             summary.crater_depth_m * 1e3
         );
         println!(
-            "beta                 {:.4} (from the target: {:.4}); ejecta {:.4e} kg",
-            summary.beta, summary.beta_target, summary.ejecta_mass_kg
+            "beta                 {:.4} (from the target: {:.4}; as a pendulum sees it: {:.4}); \
+             ejecta {:.4e} kg",
+            summary.beta, summary.beta_target, summary.beta_pendulum, summary.ejecta_mass_kg
         );
         println!(
             "cost                 {} particles, {} steps, {:.1} s wall, {:.3e} particle-steps/s",

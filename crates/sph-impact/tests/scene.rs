@@ -401,6 +401,7 @@ fn smoke_scene_runs_end_to_end() {
         "crater_depth_m",
         "beta",
         "beta_target",
+        "beta_pendulum",
         "beta_change_last_half",
         "ejecta_mass_kg",
         "particles",
@@ -446,6 +447,12 @@ fn smoke_scene_runs_end_to_end() {
         "{summary:?}"
     );
     assert!(summary.beta >= 1.0);
+    // The pendulum leaves rising projectile debris out of the target, which can only
+    // add to what the target received.
+    assert!(
+        summary.beta_pendulum >= summary.beta_target - 1e-12,
+        "{summary:?}"
+    );
     assert!(summary.energy_error.abs() < 1e-9);
     // Spall only widens: the diameter with fractured rock counted as removed is at least
     // that of the removed material alone.
@@ -477,6 +484,9 @@ fn smoke_scene_runs_end_to_end() {
             assert!(id < summary.particles as u64, "{line}");
         }
     }
+    // The last row is the final state the summary reports.
+    let last: Vec<&str> = history.lines().last().unwrap().split(',').collect();
+    assert_eq!(last[15].parse::<f64>().unwrap(), summary.beta_pendulum);
     let pvd = std::fs::read_to_string(dir.join("run.pvd")).unwrap();
     assert_eq!(pvd.matches("<DataSet").count(), 5);
     print_result("smoke", &summary);
@@ -727,6 +737,9 @@ fn rz_smoke_scene_runs_end_to_end() {
         serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap()).unwrap();
     assert_eq!(json["geometry"], "rz");
     assert_eq!(json["scheme"]["geometry"], "axisymmetric");
+    // No ring crossed the axis (the mirror would have brought it back and counted it).
+    assert_eq!(json["axis_crossings"], 0);
+    assert_eq!(json["axis_crossings_midpoint"], 0);
     // Totals are the whole bodies': the projectile's mass and momentum, not per radian.
     let m_p = summary.projectile_mass_kg;
     assert!(

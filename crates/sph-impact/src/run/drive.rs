@@ -196,6 +196,7 @@ fn row<D: SceneDimension>(
         dt_particle_id: step.map_or(0, |s| s.vote.particle_id),
         beta: beta.beta,
         beta_target: beta.beta_target,
+        beta_pendulum: beta.beta_pendulum,
         ejecta_mass: beta.ejecta_mass,
         crater_depth: crater.0,
         crater_diameter: crater.1,

@@ -108,6 +108,7 @@ pub(crate) fn summarise<D: SceneDimension>(
         rim_height_m: active(c.rim_height),
         beta: f64::NAN,
         beta_target: f64::NAN,
+        beta_pendulum: f64::NAN,
         beta_change_last_half: f64::NAN,
         ejecta_mass_kg: 0.0,
         ejecta_momentum_z_kg_m_s: 0.0,
@@ -135,6 +136,8 @@ pub(crate) fn summarise<D: SceneDimension>(
         timings: sim.timings,
         damage_events: sim.damage_events,
         density_floor_events: sim.density_floor_events,
+        axis_crossings: sim.axis_crossings,
+        axis_crossings_midpoint: sim.axis_crossings_midpoint,
         free_flight_particles: free_flight,
     };
     summary.set_beta(&beta);

@@ -7,7 +7,7 @@ use std::io::{BufWriter, Write};
 use std::path::{Path, PathBuf};
 
 /// The columns of `history.csv` (SI units).
-pub const HISTORY_COLUMNS: [&str; 15] = [
+pub const HISTORY_COLUMNS: [&str; 16] = [
     "t_s",
     "step",
     "dt_s",
@@ -23,6 +23,7 @@ pub const HISTORY_COLUMNS: [&str; 15] = [
     "crater_measured",
     "dt_reason",
     "dt_particle_id",
+    "beta_pendulum",
 ];
 
 /// One row.
@@ -38,6 +39,8 @@ pub struct HistoryRow {
     pub beta: f64,
     /// β from the target's momentum.
     pub beta_target: f64,
+    /// β as a ballistic pendulum sees it (escaping projectile debris left out).
+    pub beta_pendulum: f64,
     /// Ejecta mass (kg).
     pub ejecta_mass: f64,
     /// Crater depth (m), from the last snapshot.
@@ -104,7 +107,7 @@ impl History {
     pub fn push(&mut self, r: HistoryRow) -> Result<(), RunError> {
         writeln!(
             self.out,
-            "{:e},{},{:e},{},{},{:e},{:e},{:e},{:e},{:e},{:e},{:e},{},{},{}",
+            "{:e},{},{:e},{},{},{:e},{:e},{:e},{:e},{:e},{:e},{:e},{},{},{},{}",
             r.t,
             r.step,
             r.dt,
@@ -119,7 +122,8 @@ impl History {
             r.momentum_z,
             u8::from(r.crater_measured),
             r.dt_reason,
-            r.dt_particle_id
+            r.dt_particle_id,
+            r.beta_pendulum
         )
         .map_err(|e| RunError::io(&self.path, e))?;
         self.rows.push(r);

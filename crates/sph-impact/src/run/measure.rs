@@ -32,6 +32,9 @@ pub(crate) struct Measurer {
 pub(crate) struct BetaMeasure {
     pub beta: f64,
     pub beta_target: f64,
+    /// β as a ballistic pendulum sees it: the target's momentum with escaping projectile
+    /// debris left out, 1 + (P_ej + P_esc)/P_imp (docs/diagnostics.md §3).
+    pub beta_pendulum: f64,
     pub ejecta_mass: f64,
     pub ejecta_momentum_z: f64,
 }
@@ -53,6 +56,7 @@ impl Measurer {
             return Ok(BetaMeasure {
                 beta: f64::NAN,
                 beta_target: f64::NAN,
+                beta_pendulum: f64::NAN,
                 ..Default::default()
             });
         }
@@ -60,17 +64,21 @@ impl Measurer {
         let c = self.criterion();
         let ej = ejecta(&view, &c)?;
         let u = self.setup.impact_speed;
-        Ok(BetaMeasure {
-            beta: beta_from_ejecta(ej.momentum_z, self.projectile_mass, u)?,
-            beta_target: beta_from_target(
+        let from_target = |debris| {
+            beta_from_target(
                 &view,
                 &c,
                 self.projectile_mass,
                 u,
                 self.initial_target_momentum_z,
-                ProjectileDebris::WithRemnant,
-            )?
-            .beta,
+                debris,
+            )
+            .map(|b| b.beta)
+        };
+        Ok(BetaMeasure {
+            beta: beta_from_ejecta(ej.momentum_z, self.projectile_mass, u)?,
+            beta_target: from_target(ProjectileDebris::WithRemnant)?,
+            beta_pendulum: from_target(ProjectileDebris::ExcludeEscaping)?,
             ejecta_mass: ej.mass,
             ejecta_momentum_z: ej.momentum_z,
         })
@@ -182,6 +190,42 @@ mod tests {
         a.damage = vec![0.0; count];
         a.specific_energy = vec![0.0; count];
         m.crater(&a).unwrap().unwrap()
+    }
+
+    /// Two target particles and two projectile particles, one of each above the surface
+    /// and rising; the projectile (1 kg at 1 km/s) brought P_imp = 1000 kg·m/s.
+    fn target_and_debris_rising() -> Arrays {
+        Arrays {
+            position: vec![
+                [1e-3, 0.0, 2e-3],
+                [1e-3, 0.0, -2e-3],
+                [0.0, 0.0, 3e-3],
+                [0.0, 0.0, -1e-3],
+            ],
+            velocity: vec![
+                [0.0, 0.0, 300.0],
+                [0.0, 0.0, -1100.0],
+                [0.0, 0.0, 50.0],
+                [0.0, 0.0, -150.0],
+            ],
+            mass: vec![1.0, 1.0, 0.4, 0.6],
+            body: vec![1, 1, 0, 0],
+            damage: vec![0.0; 4],
+            density: vec![2876.0; 4],
+            specific_energy: vec![0.0; 4],
+        }
+    }
+
+    #[test]
+    fn the_pendulum_counts_escaping_projectile_debris_and_the_ejecta_beta_does_not() {
+        let b = measurer(None).beta(&target_and_debris_rising()).unwrap();
+        // Target ejecta: 1 kg at 300 m/s.
+        assert!((b.beta - 1.3).abs() < 1e-12, "{b:?}");
+        // The remnant holds everything else: −1100 + 20 − 90 = −1170 kg·m/s.
+        assert!((b.beta_target - 1.17).abs() < 1e-12, "{b:?}");
+        // The pendulum leaves out the rising debris above the surface (0.4 kg at 50 m/s):
+        // −(−1100 − 90)/1000.
+        assert!((b.beta_pendulum - 1.19).abs() < 1e-12, "{b:?}");
     }
 
     #[test]

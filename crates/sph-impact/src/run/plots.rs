@@ -7,7 +7,7 @@ use crate::run::error::RunError;
 use crate::run::history::HistoryRow;
 use crate::scene::GeometryKind;
 use sph_diagnostics::plot::{
-    BLACK, BLUE, ColorScale, Colormap, Figure, GREY, Marker, ORANGE, PlotError, RED, Style,
+    BLACK, BLUE, ColorScale, Colormap, Figure, GREEN, GREY, Marker, ORANGE, PlotError, RED, Style,
 };
 use sph_diagnostics::{EjectaBin, MassHistogram};
 use sph_eos::ThermalModel;
@@ -128,6 +128,7 @@ pub(crate) fn histories(rows: &[HistoryRow], path: &Path) -> Result<(), RunError
     let t: Vec<f64> = rows.iter().map(|r| r.t * 1e6).collect();
     let beta: Vec<f64> = rows.iter().map(|r| r.beta).collect();
     let beta_t: Vec<f64> = rows.iter().map(|r| r.beta_target).collect();
+    let beta_p: Vec<f64> = rows.iter().map(|r| r.beta_pendulum).collect();
     let measured: Vec<&HistoryRow> = rows.iter().filter(|r| r.crater_measured).collect();
     let tc: Vec<f64> = measured.iter().map(|r| r.t * 1e6).collect();
     let depth: Vec<f64> = measured.iter().map(|r| r.crater_depth * 1e3).collect();
@@ -144,6 +145,14 @@ pub(crate) fn histories(rows: &[HistoryRow], path: &Path) -> Result<(), RunError
         Style::line(ORANGE)
             .dashed(6.0, 4.0)
             .label("beta from target"),
+    )
+    .map_err(&e)?;
+    ax.line(
+        &t,
+        &beta_p,
+        Style::line(GREEN)
+            .dashed(2.0, 4.0)
+            .label("beta as a pendulum sees it"),
     )
     .map_err(&e)?;
     let ax = fig.panel(1, 0, 2, 1).map_err(&e)?;

@@ -94,6 +94,10 @@ pub struct RunSummary {
     pub beta: f64,
     /// β from the target's momentum change (cross-check).
     pub beta_target: f64,
+    /// β as a ballistic pendulum (the experiment) sees it: escaping projectile debris
+    /// (above the surface, rising) is not part of the target, so
+    /// β = 1 + (P_ej + P_esc)/P_imp (docs/diagnostics.md §3).
+    pub beta_pendulum: f64,
     /// (β(t_end) − β(t_end/2))/β(t_end) from `history.csv`: how far β still moved over
     /// the run's second half (`run::beta_change_last_half`); near zero once it has
     /// settled.
@@ -150,6 +154,12 @@ pub struct RunSummary {
     /// Times a solid particle's density was raised to its floor
     /// (`SchemeConfig::solid_density_floor`).
     pub density_floor_events: u64,
+    /// RZ only: rings that crossed the axis within a step and were mirrored back
+    /// (`Simulation::axis_crossings`); 0 in 3-D.
+    pub axis_crossings: u64,
+    /// RZ only: RK2 midpoint positions found across the axis
+    /// (`Simulation::axis_crossings_midpoint`); 0 in 3-D.
+    pub axis_crossings_midpoint: u64,
     /// Particles in free flight at the end (`SchemeConfig::free_flight_above`): out of
     /// the hydrodynamics, moving at constant velocity; they are in every other output.
     pub free_flight_particles: usize,
@@ -160,6 +170,7 @@ impl RunSummary {
     pub(crate) fn set_beta(&mut self, b: &BetaMeasure) {
         self.beta = b.beta;
         self.beta_target = b.beta_target;
+        self.beta_pendulum = b.beta_pendulum;
         self.ejecta_mass_kg = b.ejecta_mass;
         self.ejecta_momentum_z_kg_m_s = b.ejecta_momentum_z;
     }

@@ -66,6 +66,15 @@ pub(crate) struct Ghost<D: Dimension> {
 }
 
 impl<D: Dimension> Boundary<D> {
+    /// The RZ axis r = 0 as a mirror (ghosts with v_r and S_rz reversed); the solver adds
+    /// it to every axisymmetric run.
+    pub(crate) fn axis() -> Self {
+        Boundary::Wall {
+            point: D::Vector::ZERO,
+            normal: D::Vector::unit(0),
+        }
+    }
+
     /// True for a boundary that pushes but cannot pull ([`Boundary::Contact`]).
     #[inline]
     pub fn is_unilateral(&self) -> bool {

@@ -123,6 +123,14 @@ pub struct Simulation<D: Dimension, K: Kernel> {
     /// How many times a solid particle's density was raised to its floor at the end of
     /// a step (`SchemeConfig::solid_density_floor`).
     pub density_floor_events: u64,
+    /// RZ only: how many times a ring crossed the axis within a step and was mirrored
+    /// back to r > 0 by the axis wall (issue 6 asks that none does); 0 in the other
+    /// geometries.
+    pub axis_crossings: u64,
+    /// RZ only: how many times a ring's RK2 midpoint position lay across the axis
+    /// (r < 0). The midpoint is not corrected, its rates are what they are, so this
+    /// counts crossings the end-of-step mirror never sees; 0 in the other geometries.
+    pub axis_crossings_midpoint: u64,
     /// Particles whose velocity is held at its value (a clamp, a driven end); empty
     /// when none. See [`Self::hold_velocity`].
     held: Vec<bool>,
@@ -174,10 +182,7 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
         if scheme.geometry == Geometry::Axisymmetric {
             check_axisymmetric(&particles)?;
             // The axis is a mirror: ghosts with v_r and S_rz reversed.
-            let axis = Boundary::Wall {
-                point: D::Vector::ZERO,
-                normal: D::Vector::unit(0),
-            };
+            let axis = Boundary::axis();
             if !boundaries.contains(&axis) {
                 boundaries.push(axis);
             }
@@ -252,6 +257,8 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
             boundary_impulse: D::Vector::ZERO,
             damage_events: DamageEvents::default(),
             density_floor_events: 0,
+            axis_crossings: 0,
+            axis_crossings_midpoint: 0,
             held: Vec::new(),
             first_dt: None,
             radius0,
@@ -306,6 +313,13 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
     /// Pressure and sound speed of every particle from its material's EOS.
     pub fn pressure_and_sound_speed(&self) -> (Vec<f64>, Vec<f64>) {
         eos_pass(&self.state.particles, &self.materials)
+    }
+
+    /// RZ only: the axis crossings so far, (mirrored back at the end of a step, found in
+    /// a midpoint state); `None` in the other geometries.
+    pub fn axis_crossing_counts(&self) -> Option<(u64, u64)> {
+        (self.scheme.geometry == Geometry::Axisymmetric)
+            .then_some((self.axis_crossings, self.axis_crossings_midpoint))
     }
 
     /// Mass, momentum and energy totals of the current state, the particles in free
@@ -711,6 +725,14 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
         // does not read them meanwhile.
         half.swap_constants(&mut s0_state);
         self.advance(&mut half, &s0_state, &s0, 0.5 * dt);
+        if self.scheme.geometry == Geometry::Axisymmetric {
+            self.axis_crossings_midpoint += half
+                .particles
+                .position
+                .iter()
+                .filter(|x| x.component(0) < 0.0)
+                .count() as u64;
+        }
         let fragment_below =
             fragment_densities(&self.materials, self.scheme.fragment_density_ratio);
         if !half.damage_state.is_empty() {
@@ -788,6 +810,7 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
             self.boundary_impulse -= s1.rates[i].dv * (m[i] * dt);
         }
         let mut corrections = 0;
+        let axis = (self.scheme.geometry == Geometry::Axisymmetric).then(Boundary::axis);
         for i in 0..next.particles.len() {
             for b in &self.boundaries {
                 let before = next.particles.velocity[i];
@@ -797,6 +820,9 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
                 );
                 if b.enforce(x, v) {
                     corrections += 1;
+                    if axis.as_ref() == Some(b) {
+                        self.axis_crossings += 1;
+                    }
                     self.boundary_impulse +=
                         (next.particles.velocity[i] - before) * next.particles.mass[i];
                 }

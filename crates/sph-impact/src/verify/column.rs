@@ -103,6 +103,14 @@ impl PlanarRun {
         }
     }
 
+    /// RZ: the axis crossings so far (`Simulation::axis_crossing_counts`; `None` in 1-D).
+    pub fn axis_crossings(&self) -> Option<(u64, u64)> {
+        match self {
+            Self::OneD(_) => None,
+            Self::Rz { sim, .. } => sim.axis_crossing_counts(),
+        }
+    }
+
     /// Number of particles.
     pub fn particles(&self) -> usize {
         match self {

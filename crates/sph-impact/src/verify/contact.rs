@@ -136,6 +136,7 @@ pub(crate) fn run(
     out.set("t_end", t_end);
     out.set("steps", steps as f64);
     out.set("particles", sim.particles() as f64);
+    out.set_axis_crossings(sim.axis_crossings());
     out.set("resolution", n as f64);
     out.set("wall_time_s", wall.elapsed().as_secs_f64());
     let profile = Profile {

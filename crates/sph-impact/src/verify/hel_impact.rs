@@ -38,6 +38,7 @@ pub(crate) fn run(
     };
     let wall = std::time::Instant::now();
     let mut particles = 0;
+    let mut crossings = None;
     for (label, v_impact, plastic_exact) in [("v400", 400.0, 2.618e9), ("v1000", 1000.0, 6.383e9)] {
         let (p, plates, c_l, dx) = two_plates_set_up(n, LENGTH, 0.5 * v_impact, YIELD, &scheme)?;
         let mut sim = PlanarRun::new(p, plates, scheme.clone(), dx, geometry)?;
@@ -48,6 +49,10 @@ pub(crate) fn run(
         let c_b = (bulk / 2700.0).sqrt();
         let t = 0.8 * LENGTH / c_l;
         sim.run_until(t, |_| {})?;
+        crossings = sim.axis_crossings().map(|(end, mid)| {
+            let (e0, m0) = crossings.unwrap_or((0, 0));
+            (end + e0, mid + m0)
+        });
         let prof = sim.profile();
         let (x, sxx) = (prof.x, prof.sigma);
         let right: Vec<usize> = (0..x.len()).filter(|&k| x[k] > 0.0).collect();
@@ -101,6 +106,8 @@ pub(crate) fn run(
     }
     out.set("resolution", n as f64);
     out.set("particles", particles as f64);
+    // Both impact speeds together.
+    out.set_axis_crossings(crossings);
     out.set("wall_time_s", wall.elapsed().as_secs_f64());
     Ok(out)
 }

@@ -204,6 +204,7 @@ fn finish_with<D: Dimension>(
         .collect();
 
     let mut out = Outcome::for_run(name, sim.state.particles.len(), n, Some(T_END), steps, wall);
+    out.set_axis_crossings(sim.axis_crossing_counts());
     let window = |k: usize| rad.r[k] >= 0.05 && rad.r[k] <= 0.35;
     rad.set_norms(&mut out, &ex, window, true);
     // Shock: the outermost crossing of the mid density, on radially binned data in 2-D/3-D.

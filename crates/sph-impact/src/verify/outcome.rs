@@ -110,6 +110,17 @@ impl Outcome {
         out
     }
 
+    /// RZ runs: records `axis_crossings` and `axis_crossings_midpoint`, the rings the
+    /// axis mirror brought back to r > 0 and the RK2 midpoints found across the axis
+    /// over the run (`Simulation::axis_crossing_counts`; issue 6 asks for none). `None`
+    /// (other geometries) records nothing.
+    pub fn set_axis_crossings(&mut self, counts: Option<(u64, u64)>) {
+        if let Some((end, mid)) = counts {
+            self.set("axis_crossings", end as f64);
+            self.set("axis_crossings_midpoint", mid as f64);
+        }
+    }
+
     /// Records a metric.
     pub fn set(&mut self, key: &str, value: impl Into<Value>) {
         self.metrics.insert(key.to_string(), value.into());

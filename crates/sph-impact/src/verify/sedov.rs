@@ -192,6 +192,7 @@ fn measure<D: Dimension>(
     let c1 = sim.conserved();
 
     let mut out = Outcome::for_run(name, sim.state.particles.len(), n, Some(t_end), steps, wall);
+    out.set_axis_crossings(sim.axis_crossing_counts());
     let mut worst: f64 = 0.0;
     for (k, (&t, &r)) in times.iter().zip(&radii).enumerate() {
         let re = exact.shock_radius(t);

@@ -170,6 +170,8 @@ struct RodRun {
     /// The modelled part's KE times this is the full rod's (4 for a quarter, 2π for RZ
     /// per radian).
     full_rod_factor: f64,
+    /// RZ: rings the axis mirror brought back to r > 0 (`None` in 3-D).
+    axis_crossings: Option<(u64, u64)>,
 }
 
 impl RodRun {
@@ -220,6 +222,7 @@ impl RodRun {
             face_radius,
             contact_radius,
             full_rod_factor,
+            axis_crossings: sim.axis_crossing_counts(),
         })
     }
 
@@ -247,6 +250,7 @@ impl RodRun {
             self.steps,
             self.wall_time_s,
         );
+        out.set_axis_crossings(self.axis_crossings);
         out.set("final_length_mm", length * 1e3);
         out.set("final_length_error_relative", length / 21.5e-3 - 1.0);
         out.set("face_radius_mm", face_radius * 1e3);
