@@ -322,6 +322,14 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
             .then_some((self.axis_crossings, self.axis_crossings_midpoint))
     }
 
+    /// RZ: how many of `positions` lie across the axis (r < 0); 0 in other geometries.
+    fn across_axis(&self, positions: &[D::Vector]) -> u64 {
+        if self.scheme.geometry != Geometry::Axisymmetric {
+            return 0;
+        }
+        positions.iter().filter(|x| x.component(0) < 0.0).count() as u64
+    }
+
     /// Mass, momentum and energy totals of the current state, the particles in free
     /// flight included.
     pub fn conserved(&self) -> Conserved<D> {
@@ -725,14 +733,7 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
         // does not read them meanwhile.
         half.swap_constants(&mut s0_state);
         self.advance(&mut half, &s0_state, &s0, 0.5 * dt);
-        if self.scheme.geometry == Geometry::Axisymmetric {
-            self.axis_crossings_midpoint += half
-                .particles
-                .position
-                .iter()
-                .filter(|x| x.component(0) < 0.0)
-                .count() as u64;
-        }
+        self.axis_crossings_midpoint += self.across_axis(&half.particles.position);
         let fragment_below =
             fragment_densities(&self.materials, self.scheme.fragment_density_ratio);
         if !half.damage_state.is_empty() {
@@ -809,8 +810,9 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
         for (i, _) in self.held.iter().enumerate().filter(|(_, h)| **h) {
             self.boundary_impulse -= s1.rates[i].dv * (m[i] * dt);
         }
+        // The axis mirror below brings these back.
+        self.axis_crossings += self.across_axis(&next.particles.position);
         let mut corrections = 0;
-        let axis = (self.scheme.geometry == Geometry::Axisymmetric).then(Boundary::axis);
         for i in 0..next.particles.len() {
             for b in &self.boundaries {
                 let before = next.particles.velocity[i];
@@ -820,9 +822,6 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
                 );
                 if b.enforce(x, v) {
                     corrections += 1;
-                    if axis.as_ref() == Some(b) {
-                        self.axis_crossings += 1;
-                    }
                     self.boundary_impulse +=
                         (next.particles.velocity[i] - before) * next.particles.mass[i];
                 }
