@@ -16,6 +16,13 @@
 //!   coupling it used. The factor is symmetric in (i, j), so the pair force stays
 //!   antisymmetric: momentum and (with the compatible energy equation) energy are still
 //!   conserved exactly.
+//! * [`StressCoupling::YieldOnly`]: damage does not scale the deviatoric stress at all;
+//!   it acts only through the damaged yield strength of paper §3.2 (Y = D Y_d +
+//!   (1 − D) Y_i for Drucker–Prager and Lundborg, (1 − D) Y_i for von Mises and
+//!   Johnson–Cook) and through the damaged pressure. Broken rock then keeps the stress
+//!   its friction allows, Y_d = μ_d P, in every pair, in the hoop force of RZ runs and in
+//!   the artificial stress. This is the form of Collins, Melosh & Ivanov (2004), where
+//!   damage enters the strength model alone (iSALE's rock strength).
 //!
 //! The coupling acts only on the deviatoric stress; the damaged pressure (tension weakened
 //! by 1 − D) is each particle's own in both forms.
@@ -31,6 +38,8 @@ pub enum StressCoupling {
     Particle,
     /// f_ij S_i and f_ij S_j with f_ij = (1 − D_max)(1 − D_min) + D_min.
     PairMax,
+    /// S_i and S_j: damage acts through the yield strength only (Collins et al. 2004).
+    YieldOnly,
 }
 
 impl StressCoupling {
@@ -44,6 +53,19 @@ impl StressCoupling {
                 let f = pair_max_factor(d_i, d_j);
                 (f, f)
             }
+            Self::YieldOnly => (1.0, 1.0),
+        }
+    }
+
+    /// The factor on one particle's own deviatoric stress where no pair is involved: the
+    /// RZ hoop force, the artificial stress and the stress that activates the flaws.
+    /// 1 − D for the two pair forms (the paper's σ = (1 − D) S − P_D I), 1 for
+    /// [`Self::YieldOnly`].
+    #[inline]
+    pub fn own_factor(self, d: f64) -> f64 {
+        match self {
+            Self::Particle | Self::PairMax => 1.0 - d,
+            Self::YieldOnly => 1.0,
         }
     }
 }
@@ -72,6 +94,10 @@ mod tests {
         assert_eq!(pair_max_factor(0.5, 0.5), 0.75);
         assert_eq!(StressCoupling::Particle.factors(0.25, 0.5), (0.75, 0.5));
         assert_eq!(StressCoupling::PairMax.factors(0.0, 1.0), (0.0, 0.0));
+        assert_eq!(StressCoupling::YieldOnly.factors(0.25, 1.0), (1.0, 1.0));
+        assert_eq!(StressCoupling::Particle.own_factor(0.25), 0.75);
+        assert_eq!(StressCoupling::PairMax.own_factor(0.25), 0.75);
+        assert_eq!(StressCoupling::YieldOnly.own_factor(1.0), 1.0);
     }
 
     proptest! {

@@ -79,7 +79,7 @@ pub struct SolverSettings {
     /// Interface coupling b_ij: `study`, `fsisph`, `riemann`, `mean`.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub coupling: Option<InterfaceCoupling>,
-    /// Damage weakening of the pair's deviatoric stress: `particle`, `pair-max`.
+    /// Damage weakening of the deviatoric stress: `particle`, `pair-max`, `yield-only`.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub stress_coupling: Option<StressCoupling>,
     /// Reconstruction limiter: `van-leer`, `minmod`, `none`.

@@ -127,6 +127,8 @@ pub(crate) struct HoopInput<'a, D: Dimension> {
     pub damage: &'a [f64],
     /// Damaged pressure P_D.
     pub pressure: &'a [f64],
+    /// How damage weakens the hoop stress (`StressCoupling::own_factor`).
+    pub coupling: sph_damage::StressCoupling,
     pub energy: EnergyForm,
     /// The kernel-smoothed radius R̂ (the denominators use ρ R̂, finite on the axis).
     pub smoothed_radius: &'a SmoothedRadius,
@@ -151,7 +153,7 @@ pub(crate) fn add_hoop_terms<D: Dimension>(
         out.drho = (out.drho - rho * input.smoothed_radius.slope(r, h) * v_r) / r_hat;
         let d = input.damage.get(i).copied().unwrap_or(0.0);
         let s_tt = input.stress.get(i).map_or(0.0, |s| s.z_axis.z);
-        let sigma_tt = (1.0 - d) * s_tt - input.pressure[i];
+        let sigma_tt = input.coupling.own_factor(d) * s_tt - input.pressure[i];
         // −σ_θθ ŝ/η along r.
         let mut a = D::Vector::ZERO;
         a.set_component(0, -sigma_tt * gauge / (rho * r_hat));

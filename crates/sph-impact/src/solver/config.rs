@@ -119,8 +119,9 @@ pub struct SchemeConfig {
     /// Damage/material coupling b_ij in v*.
     pub coupling: InterfaceCoupling,
     /// How damage weakens the deviatoric stress in the pair force of two particles of the
-    /// same material: each particle's own (1 − D) (the study's §2, default) or one factor
-    /// of the pair's damages (Spheral's pair-max coupling; [`StressCoupling`]).
+    /// same material: each particle's own (1 − D) (the study's §2, default), one factor
+    /// of the pair's damages (Spheral's pair-max coupling), or not at all, damage acting
+    /// on the yield strength only (Collins et al. 2004; [`StressCoupling`]).
     pub stress_coupling: StressCoupling,
     /// Reconstruction of the normal velocity and pressure toward the pair midpoint.
     pub limiter: Limiter,

@@ -53,7 +53,8 @@ pub(crate) struct DamageRate {
 /// What the damage model needs of one particle in one stage.
 pub(crate) struct DamageStageInput<'a> {
     /// Deviatoric stress S per real particle (3×3), undamaged: the damage D below is
-    /// applied here, σ = (1 − D) S − P_D I.
+    /// applied here, σ = (1 − D) S − P_D I (σ = S − P_D I where damage acts on the
+    /// yield strength only, [`Self::coupling`]).
     pub stress: &'a [sph_core::glam::DMat3],
     /// Damaged pressure P_D.
     pub pressure: &'a [f64],
@@ -63,6 +64,8 @@ pub(crate) struct DamageStageInput<'a> {
     pub shear_modulus: &'a [f64],
     /// Damage D.
     pub damage: &'a [f64],
+    /// How damage weakens the stress that activates the flaws.
+    pub coupling: sph_damage::StressCoupling,
     /// Particle spacing Δx (crack-growth radius).
     pub spacing: &'a [f64],
     /// The spin Ω = ½ (L − Lᵀ) of each particle (3×3), for tensor damage only (empty
@@ -142,9 +145,10 @@ pub(crate) fn damage_rates<D: Dimension>(
                 // Grown by tensor_damage_rates.
                 return still;
             }
-            // σ_1 of the total stress σ = (1 − D) S − P_D I, tension positive; the stored
-            // 3×3 includes the out-of-plane components of 1-D and 2-D runs.
-            let sigma = input.stress[i] * (1.0 - d)
+            // σ_1 of the total stress σ = (1 − D) S − P_D I (S − P_D I where damage acts
+            // on the yield strength only), tension positive; the stored 3×3 includes the
+            // out-of-plane components of 1-D and 2-D runs.
+            let sigma = input.stress[i] * input.coupling.own_factor(d)
                 - sph_core::glam::DMat3::from_diagonal(sph_core::glam::DVec3::splat(
                     input.pressure[i],
                 ));

@@ -461,11 +461,14 @@ pub(crate) fn rates<D: Dimension, P: PairKernel<D>>(
             // The pair's deviatoric stresses, weakened by damage: each particle's own
             // (1 − D) across a material interface, the scheme's coupling within a body.
             let (si, sj) = if solid {
-                let coupling = if same_material {
-                    scheme.stress_coupling
-                } else {
-                    StressCoupling::Particle
-                };
+                // Yield-only coupling never scales S, across interfaces too (as the hoop
+                // force and the artificial stress).
+                let coupling =
+                    if same_material || scheme.stress_coupling == StressCoupling::YieldOnly {
+                        scheme.stress_coupling
+                    } else {
+                        StressCoupling::Particle
+                    };
                 // Tensor damage: each particle's damage across the pair's direction
                 // (sph_damage::tensor); a scalar damage projects to itself.
                 let (ci, cj) = if ext.damage_tensor.is_empty() {

@@ -449,6 +449,7 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
             &support,
             &self.boundaries,
         );
+        ext.coupling = self.scheme.stress_coupling;
         drop(support);
         let n_real = ext.n_real;
         // D of the real particles (empty without damage).
@@ -600,6 +601,7 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
                         &hoop_damage
                     },
                     pressure: &ext.pressure[..n_real],
+                    coupling: self.scheme.stress_coupling,
                     energy: self.scheme.energy,
                     smoothed_radius: self.smoothed_radius.as_ref().expect("RZ has the table"),
                 },
@@ -631,6 +633,7 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
             sound_speed: &sound_speed,
             shear_modulus: &shear_modulus,
             damage: &ext.damage[..n_damage],
+            coupling: self.scheme.stress_coupling,
             spacing: &spacing,
             spin: &spin,
         };
@@ -1276,7 +1279,8 @@ fn damaged_pressures(pressure: &[f64], damage: &[f64]) -> Vec<f64> {
 }
 
 /// The artificial-stress tensor R of every particle, ghosts included, from its total
-/// stress σ = (1 − D) S − P_D I (paper §2.3).
+/// stress σ = (1 − D) S − P_D I (paper §2.3; S itself where damage acts on the yield
+/// strength only).
 fn artificial_stress_tensors<D: Dimension>(
     ext: &Extended<'_, D>,
     a: &sph_riemann::ArtificialStress,

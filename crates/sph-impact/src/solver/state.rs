@@ -271,6 +271,9 @@ pub(crate) struct Extended<'a, D: Dimension> {
     ghost_stress: Vec<sph_core::glam::DMat3>,
     /// Damage D (empty without damage).
     pub damage: Vec<f64>,
+    /// How damage weakens a particle's own deviatoric stress in [`Self::stress`]
+    /// (`StressCoupling::own_factor`); the pair terms apply the pair factors themselves.
+    pub coupling: sph_damage::StressCoupling,
     /// The damage tensor of every particle, real and ghost (a scalar damage D as D I),
     /// for the pairs' projected coupling; empty unless some material's damage is a
     /// tensor ([`Self::set_damage_tensor`]).
@@ -292,12 +295,13 @@ impl<'a, D: Dimension> Extended<'a, D> {
         !self.real_stress.is_empty()
     }
 
-    /// The damaged deviatoric stress (1 − D) S of particle k (real or ghost); only when
+    /// The damaged deviatoric stress of particle k (real or ghost): (1 − D) S, or S where
+    /// damage acts on the yield strength only ([`Self::coupling`]); only when
     /// [`Self::has_stress`].
     #[inline]
     pub fn stress(&self, k: usize) -> sph_core::glam::DMat3 {
         match self.damage.get(k) {
-            Some(d) => self.undamaged_stress(k) * (1.0 - d),
+            Some(&d) => self.undamaged_stress(k) * self.coupling.own_factor(d),
             None => self.undamaged_stress(k),
         }
     }
@@ -365,6 +369,7 @@ impl<'a, D: Dimension> Extended<'a, D> {
             real_stress: stress,
             ghost_stress: Vec::new(),
             damage,
+            coupling: sph_damage::StressCoupling::default(),
             damage_tensor: Vec::new(),
             astress: Vec::new(),
             radius: Vec::new(),
