@@ -25,7 +25,7 @@
 //!   damage enters the strength model alone (iSALE's rock strength).
 //!
 //! The coupling acts only on the deviatoric stress; the damaged pressure (tension weakened
-//! by 1 − D) is each particle's own in both forms.
+//! by 1 − D) is each particle's own in every form.
 
 use serde::{Deserialize, Serialize};
 
@@ -54,6 +54,17 @@ impl StressCoupling {
                 (f, f)
             }
             Self::YieldOnly => (1.0, 1.0),
+        }
+    }
+
+    /// The coupling of a pair across a material interface: pair-max falls back to each
+    /// particle's own (1 − D) (a crack in one body is not a crack in the other); the
+    /// other two forms are the same across an interface as within a body.
+    #[inline]
+    pub fn across_interface(self) -> Self {
+        match self {
+            Self::PairMax => Self::Particle,
+            other => other,
         }
     }
 
@@ -98,6 +109,14 @@ mod tests {
         assert_eq!(StressCoupling::Particle.own_factor(0.25), 0.75);
         assert_eq!(StressCoupling::PairMax.own_factor(0.25), 0.75);
         assert_eq!(StressCoupling::YieldOnly.own_factor(1.0), 1.0);
+        assert_eq!(
+            StressCoupling::PairMax.across_interface(),
+            StressCoupling::Particle
+        );
+        assert_eq!(
+            StressCoupling::YieldOnly.across_interface(),
+            StressCoupling::YieldOnly
+        );
     }
 
     proptest! {

@@ -20,7 +20,6 @@ use crate::solver::pair_kernel::PairKernel;
 use crate::solver::state::Extended;
 use rayon::prelude::*;
 use sph_core::{Dimension, NeighborList, Tensor, Vector};
-use sph_damage::StressCoupling;
 use sph_damage::tensor::projected_damage;
 use sph_riemann::{PairInterface, SideState, interface_velocity, reconstruct};
 
@@ -461,14 +460,11 @@ pub(crate) fn rates<D: Dimension, P: PairKernel<D>>(
             // The pair's deviatoric stresses, weakened by damage: each particle's own
             // (1 − D) across a material interface, the scheme's coupling within a body.
             let (si, sj) = if solid {
-                // Yield-only coupling never scales S, across interfaces too (as the hoop
-                // force and the artificial stress).
-                let coupling =
-                    if same_material || scheme.stress_coupling == StressCoupling::YieldOnly {
-                        scheme.stress_coupling
-                    } else {
-                        StressCoupling::Particle
-                    };
+                let coupling = if same_material {
+                    scheme.stress_coupling
+                } else {
+                    scheme.stress_coupling.across_interface()
+                };
                 // Tensor damage: each particle's damage across the pair's direction
                 // (sph_damage::tensor); a scalar damage projects to itself.
                 let (ci, cj) = if ext.damage_tensor.is_empty() {
