@@ -857,9 +857,10 @@ fn rz_spherical_noh_matches_the_3d_accuracy() {
 /// Planar Noh along z in RZ against the same column in plane 2-D (verification.md, RZ
 /// section): with the study's momentum form and viscosity the RZ terms add less than 10 %
 /// to the 2-D column's L1(ρ) (measured: 0.231 against 0.227 at 40 rows). The plane column
-/// is itself 2.4 times the 1-D error (2-D SPH's, not the geometry's).
+/// is itself 1.2–2.4 times the 1-D error (2-D SPH's, not the geometry's), but its density
+/// profile, averaged over the cross-section, is the 1-D run's within a few per cent.
 #[test]
-fn rz_planar_noh_matches_the_plane_column() {
+fn rz_planar_noh_matches_the_plane_column_and_the_1d_profile() {
     let mut scheme = Problem::NohPlanar.default_scheme();
     scheme.momentum = sph_impact::MomentumForm::ParticlePressure;
     scheme.viscosity = sph_riemann::MonaghanViscosity {
@@ -874,6 +875,11 @@ fn rz_planar_noh_matches_the_plane_column() {
     let (a, b) = (rz.get("l1_rho").unwrap(), plane.get("l1_rho").unwrap());
     println!("L1(ρ): RZ {a:.4}, plane column {b:.4}");
     assert!((a / b - 1.0).abs() < 0.1, "RZ {a} against plane {b}");
+    // Issue 6: the RZ column reproduces the 1-D run's density profile (cross-section
+    // means along z) within 10 %. Measured 0.052 here, 0.021 at 100 rows.
+    let d = rz.get("rho_profile_difference_from_1d").unwrap();
+    println!("RZ density profile against 1-D: {d:.4}");
+    assert!(d < 0.1, "RZ profile {d} from the 1-D one");
 }
 
 /// Asking for a form a problem does not have (RZ, plane column, rings, an energy

@@ -28,6 +28,14 @@ fn exact(dim: u32) -> Result<Noh, SolverError> {
 
 /// Planar Noh with `n` particles across [0, 1].
 pub(crate) fn run_planar(n: usize, scheme: SchemeConfig) -> Result<Outcome, SolverError> {
+    finish("noh-planar", 1, n, 1.0 / n as f64, planar_1d(n, scheme)?)
+}
+
+/// The 1-D planar set-up with `n` particles across [0, 1], not yet run.
+fn planar_1d(
+    n: usize,
+    scheme: SchemeConfig,
+) -> Result<Simulation<Dim1, KernelChoice>, SolverError> {
     let dx = 1.0 / n as f64;
     let mut p = Particles::<Dim1>::new();
     for k in 0..n {
@@ -41,7 +49,7 @@ pub(crate) fn run_planar(n: usize, scheme: SchemeConfig) -> Result<Outcome, Solv
             scheme.n_target * dx,
         ));
     }
-    let sim = simulation(
+    simulation(
         p,
         gas(GAMMA)?,
         scheme,
@@ -50,8 +58,7 @@ pub(crate) fn run_planar(n: usize, scheme: SchemeConfig) -> Result<Outcome, Solv
             normal: 1.0,
         }],
         None,
-    )?;
-    finish("noh-planar", 1, n, dx, sim)
+    )
 }
 
 /// Planar Noh along z in a 2-D column: `n` rows on z ∈ [0, 1] and n/4 columns out to
@@ -110,8 +117,31 @@ pub(crate) fn run_planar_column(
     } else {
         "noh-planar (plane column)"
     };
+    let mut one_d = scheme.clone();
+    one_d.geometry = crate::Geometry::Cartesian;
     let sim = simulation(p, gas(GAMMA)?, scheme, walls, None)?;
-    finish_with(name, 1, n, dx, sim, |s| Radial::along(s, 1))
+    let (mut out, column) = finish_with(name, 1, n, dx, sim, |s| Radial::along(s, 1))?;
+    // The comparison (RZ reproduces the 1-D result): the same problem in 1-D
+    // with the same scheme, and the relative L1 difference of the two density profiles
+    // along z, each averaged over the cross-section in bins one initial spacing wide.
+    let mut line = planar_1d(n, one_d)?;
+    line.run_until(T_END, |_, _| {})?;
+    let reference = Radial::of(&line);
+    let noh = exact(1)?;
+    let exact_rho: Vec<f64> = reference
+        .r
+        .iter()
+        .map(|&z| noh.state(z, T_END).density)
+        .collect();
+    let in_window = |k: usize| reference.r[k] >= 0.05 && reference.r[k] <= 0.35;
+    let l1_1d =
+        sph_diagnostics::error_norms(&reference.rho, &exact_rho, &reference.w, in_window).l1;
+    out.set("l1_rho_1d", l1_1d);
+    out.set(
+        "rho_profile_difference_from_1d",
+        column.binned_difference(&reference, dx, 0.05, 0.35),
+    );
+    Ok(out)
 }
 
 /// Cylindrical Noh with `n` lattice spacings across the radius.
@@ -177,11 +207,11 @@ fn finish<D: Dimension>(
     dx: f64,
     sim: Simulation<D, KernelChoice>,
 ) -> Result<Outcome, SolverError> {
-    finish_with(name, dim, n, dx, sim, Radial::of)
+    Ok(finish_with(name, dim, n, dx, sim, Radial::of)?.0)
 }
 
 /// [`finish`] with the profile taken by `profile` (the exact solution's geometry is
-/// `dim`, the run's may be larger).
+/// `dim`, the run's may be larger); also returns that profile.
 fn finish_with<D: Dimension>(
     name: &str,
     dim: u32,
@@ -189,7 +219,7 @@ fn finish_with<D: Dimension>(
     dx: f64,
     mut sim: Simulation<D, KernelChoice>,
     profile: fn(&Simulation<D, KernelChoice>) -> Radial,
-) -> Result<Outcome, SolverError> {
+) -> Result<(Outcome, Radial), SolverError> {
     let c0 = sim.conserved();
     let wall = std::time::Instant::now();
     let steps = sim.run_until(T_END, |_, _| {})?;
@@ -248,5 +278,5 @@ fn finish_with<D: Dimension>(
         rows: rad.rows(&ex_cols),
     };
     push_exact_curves(&mut out, 1.0, |r| noh.state(r, T_END));
-    Ok(out)
+    Ok((out, rad))
 }
