@@ -124,19 +124,8 @@ pub(crate) fn run_planar_column(
     // The comparison (RZ reproduces the 1-D result): the same problem in 1-D
     // with the same scheme, and the relative L1 difference of the two density profiles
     // along z, each averaged over the cross-section in bins one initial spacing wide.
-    let mut line = planar_1d(n, one_d)?;
-    line.run_until(T_END, |_, _| {})?;
-    let reference = Radial::of(&line);
-    let noh = exact(1)?;
-    let exact_rho: Vec<f64> = reference
-        .r
-        .iter()
-        .map(|&z| noh.state(z, T_END).density)
-        .collect();
-    let in_window = |k: usize| reference.r[k] >= 0.05 && reference.r[k] <= 0.35;
-    let l1_1d =
-        sph_diagnostics::error_norms(&reference.rho, &exact_rho, &reference.w, in_window).l1;
-    out.set("l1_rho_1d", l1_1d);
+    let (line, reference) = finish_with("noh-planar", 1, n, dx, planar_1d(n, one_d)?, Radial::of)?;
+    out.set("l1_rho_1d", line.get("l1_rho").unwrap_or(f64::NAN));
     out.set(
         "rho_profile_difference_from_1d",
         column.binned_difference(&reference, dx, 0.05, 0.35),

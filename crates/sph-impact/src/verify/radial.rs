@@ -80,8 +80,8 @@ impl Radial {
         let theirs: std::collections::HashMap<i64, f64> =
             rr.iter().map(|&r| bin(r)).zip(theirs).collect();
         let (mut diff, mut norm) = (0.0, 0.0);
-        for (r, m) in rc.iter().zip(&mine) {
-            if let Some(t) = theirs.get(&bin(*r)).filter(|_| (lo..=hi).contains(r)) {
+        for (r, m) in rc.iter().zip(&mine).filter(|(r, _)| (lo..=hi).contains(*r)) {
+            if let Some(t) = theirs.get(&bin(*r)) {
                 diff += (m - t).abs();
                 norm += t.abs();
             }
