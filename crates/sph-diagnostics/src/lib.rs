@@ -33,6 +33,7 @@
 //! ## Feature flags
 //! None.
 
+pub mod axis_depth;
 pub mod base64;
 pub mod beta;
 pub mod crater;
@@ -53,6 +54,7 @@ pub mod pvd;
 pub mod vtu;
 pub mod xml;
 
+pub use axis_depth::{AxisDepth, AxisField};
 pub use beta::{
     ProjectileDebris, TargetBeta, beta_from_ejecta, beta_from_target, impactor_momentum,
 };

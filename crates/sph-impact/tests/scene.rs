@@ -49,12 +49,14 @@ fn message(text: &str) -> String {
 /// One line with what a smoke run produced (particles are rings in RZ).
 fn print_result(label: &str, s: &sph_impact::run::RunSummary) {
     println!(
-        "{label}: {} particles, {} steps, β {:.4}, crater Ø {:.2} mm, depth {:.2} mm, {:.2} s",
+        "{label}: {} particles, {} steps, β {:.4}, crater Ø {:.2} mm, depth {:.2} mm \
+         (axis {:.2} mm), {:.2} s",
         s.particles,
         s.steps,
         s.beta,
         s.crater_diameter_m * 1e3,
         s.crater_depth_m * 1e3,
+        s.crater_axis_depth_m * 1e3,
         s.wall_time_s
     );
 }
@@ -264,6 +266,9 @@ fn other_bad_values() {
     let m = message(&format!("{BASE}rubble_density = 1.0\n"));
     assert!(m.contains("`diagnostics.rubble_density`"), "{m}");
     assert!(m.contains("must be in [0, 1)"), "{m}");
+    let m = message(&format!("{BASE}axis_kernel_width = -1.0e-3\n"));
+    assert!(m.contains("`diagnostics.axis_kernel_width`"), "{m}");
+    assert!(m.contains("must be positive (m)"), "{m}");
     let m = message(&edit("name = \"target\"", "name = \"projectile\""));
     assert!(m.contains("used twice"), "{m}");
 }
@@ -487,6 +492,11 @@ fn smoke_scene_runs_end_to_end() {
     // The last row is the final state the summary reports.
     let last: Vec<&str> = history.lines().last().unwrap().split(',').collect();
     assert_eq!(last[15].parse::<f64>().unwrap(), summary.beta_pendulum);
+    // The axis depth of the last row is the summary's, measured on the same state.
+    let axis_depth = last[16].parse::<f64>().unwrap();
+    assert!(axis_depth.is_finite(), "{line:?}", line = last);
+    assert_eq!(axis_depth, summary.crater_axis_depth_m);
+    assert!(json["crater_axis_depth_m"].is_number(), "{json}");
     let pvd = std::fs::read_to_string(dir.join("run.pvd")).unwrap();
     assert_eq!(pvd.matches("<DataSet").count(), 5);
     print_result("smoke", &summary);
@@ -688,6 +698,14 @@ fn a_quarter_model_runs_as_the_whole_body() {
     close(quarter.last.kinetic, full.last.kinetic, "kinetic energy");
     close(quarter.last.internal, full.last.internal, "internal energy");
     close(quarter.beta, full.beta, "beta");
+    // The axis depth sums each quarter particle as its four copies, equidistant from
+    // the axis: the full body's value to the bisection's tolerance.
+    assert!(
+        (quarter.crater_axis_depth_m - full.crater_axis_depth_m).abs() < 1e-9,
+        "axis depth: quarter {} against full {}",
+        quarter.crater_axis_depth_m,
+        full.crater_axis_depth_m
+    );
     println!(
         "full {} particles, quarter {}: KE {:.9e} against {:.9e}, beta {} against {}",
         full_built.simulation.particle_count(),
@@ -759,6 +777,11 @@ fn rz_smoke_scene_runs_end_to_end() {
     );
     let vtu = std::fs::read_to_string(dir.join("snapshots/00002.vtu")).unwrap();
     assert!(vtu.contains("Name=\"deviatoric_stress\""));
+    assert!(
+        summary.crater_axis_depth_m.is_finite(),
+        "{}",
+        summary.crater_axis_depth_m
+    );
     print_result("smoke (rz)", &summary);
 }
 

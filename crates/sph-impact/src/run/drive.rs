@@ -76,6 +76,7 @@ impl Job<'_> {
             geometry: D::KIND,
             top_offset: 0.0,
             target_density,
+            axis: None,
         };
         measurer.calibrate(&Arrays::of(&sim, copies))?;
         let n = sim.state.particles.len();
@@ -87,18 +88,22 @@ impl Job<'_> {
         let mut progress = Progress::new(self.options.quiet, end_time, n);
 
         let mut snapshot_index = 0;
-        let mut crater = (f64::NAN, f64::NAN);
+        let mut crater = CraterReading::default();
         let mut take_snapshot = |sim: &Simulation<D, KernelChoice>,
                                  history: &mut History,
                                  step: Option<&StepInfo>,
-                                 crater: &mut (f64, f64)|
+                                 crater: &mut CraterReading|
          -> Result<(), RunError> {
             let a = Arrays::of(sim, copies);
             let (pressure, _) = sim.pressure_and_sound_speed();
             snapshot::write_snapshot(sim, &a, &pressure, dir, snapshot_index, &mut pvd)?;
             snapshot_index += 1;
             if let Some(c) = measurer.crater(&a)? {
-                *crater = (c.depth, c.diameter);
+                *crater = CraterReading {
+                    depth: c.depth,
+                    diameter: c.diameter,
+                    axis_depth: measurer.axis_depth(&a)?,
+                };
             }
             history.push(row(sim, copies, &measurer.beta(&a)?, *crater, step, true))?;
             Ok(())
@@ -177,13 +182,32 @@ impl Job<'_> {
     }
 }
 
+/// The crater as last measured (at a snapshot), carried by the rows in between (m).
+#[derive(Clone, Copy, Debug)]
+struct CraterReading {
+    depth: f64,
+    diameter: f64,
+    /// From the volume fraction on the axis (`Measurer::axis_depth`).
+    axis_depth: f64,
+}
+
+impl Default for CraterReading {
+    fn default() -> Self {
+        Self {
+            depth: f64::NAN,
+            diameter: f64::NAN,
+            axis_depth: f64::NAN,
+        }
+    }
+}
+
 /// A history row of the current state (totals of the whole bodies) after the step
 /// `step` (`None` at t = 0).
 fn row<D: SceneDimension>(
     sim: &Simulation<D, KernelChoice>,
     copies: f64,
     beta: &BetaMeasure,
-    crater: (f64, f64),
+    crater: CraterReading,
     step: Option<&StepInfo>,
     crater_measured: bool,
 ) -> HistoryRow {
@@ -198,8 +222,9 @@ fn row<D: SceneDimension>(
         beta_target: beta.beta_target,
         beta_pendulum: beta.beta_pendulum,
         ejecta_mass: beta.ejecta_mass,
-        crater_depth: crater.0,
-        crater_diameter: crater.1,
+        crater_depth: crater.depth,
+        crater_diameter: crater.diameter,
+        crater_axis_depth: crater.axis_depth,
         kinetic: c.kinetic,
         internal: c.internal,
         momentum_z: c.momentum[2],

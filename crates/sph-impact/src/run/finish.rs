@@ -35,6 +35,7 @@ pub(crate) fn summarise<D: SceneDimension>(
     let view = a.view();
     let beta = measurer.beta(&a)?;
     let final_crater = measurer.crater(&a)?;
+    let axis_depth = measurer.axis_depth(&a)?;
     let ejecta_bins = if measurer.active() {
         ejecta_distribution(
             &view,
@@ -105,6 +106,8 @@ pub(crate) fn summarise<D: SceneDimension>(
         crater_diameter_removed_m: active(c.diameter_removed),
         bowl_diameter_m: active(c.bowl_diameter),
         crater_depth_m: active(c.depth),
+        crater_axis_depth_m: axis_depth,
+        crater_axis_kernel_width_m: active(setup.axis_kernel_width),
         rim_height_m: active(c.rim_height),
         beta: f64::NAN,
         beta_target: f64::NAN,

@@ -7,7 +7,7 @@ use std::io::{BufWriter, Write};
 use std::path::{Path, PathBuf};
 
 /// The columns of `history.csv` (SI units).
-pub const HISTORY_COLUMNS: [&str; 16] = [
+pub const HISTORY_COLUMNS: [&str; 17] = [
     "t_s",
     "step",
     "dt_s",
@@ -24,6 +24,7 @@ pub const HISTORY_COLUMNS: [&str; 16] = [
     "dt_reason",
     "dt_particle_id",
     "beta_pendulum",
+    "crater_axis_depth_m",
 ];
 
 /// One row.
@@ -47,6 +48,9 @@ pub struct HistoryRow {
     pub crater_depth: f64,
     /// Crater diameter (m), from the last snapshot.
     pub crater_diameter: f64,
+    /// Crater depth on the axis from the target's volume fraction (m), from the last
+    /// snapshot (docs/diagnostics.md §4.4).
+    pub crater_axis_depth: f64,
     /// Σ ½ m v² of the whole bodies (J; 2π × the solver's per-radian sum in RZ).
     pub kinetic: f64,
     /// Σ m e of the whole bodies (J).
@@ -107,7 +111,7 @@ impl History {
     pub fn push(&mut self, r: HistoryRow) -> Result<(), RunError> {
         writeln!(
             self.out,
-            "{:e},{},{:e},{},{},{:e},{:e},{:e},{:e},{:e},{:e},{:e},{},{},{},{}",
+            "{:e},{},{:e},{},{},{:e},{:e},{:e},{:e},{:e},{:e},{:e},{},{},{},{},{:e}",
             r.t,
             r.step,
             r.dt,
@@ -123,7 +127,8 @@ impl History {
             u8::from(r.crater_measured),
             r.dt_reason,
             r.dt_particle_id,
-            r.beta_pendulum
+            r.beta_pendulum,
+            r.crater_axis_depth
         )
         .map_err(|e| RunError::io(&self.path, e))?;
         self.rows.push(r);

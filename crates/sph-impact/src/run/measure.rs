@@ -5,8 +5,8 @@ use crate::run::arrays::Arrays;
 use crate::scene::{DiagnosticSetup, GeometryKind};
 use serde::Serialize;
 use sph_diagnostics::{
-    Crater, CraterOptions, DensityCut, EjectaCriterion, Geometry, ProjectileDebris,
-    beta_from_ejecta, beta_from_target, crater, ejecta,
+    AxisDepth, AxisField, Crater, CraterOptions, DensityCut, EjectaCriterion, Geometry,
+    ProjectileDebris, beta_from_ejecta, beta_from_target, crater, ejecta,
 };
 
 /// What the diagnostics need that does not change during a run.
@@ -25,6 +25,9 @@ pub(crate) struct Measurer {
     pub top_offset: f64,
     /// Reference density of the (first) target's material (kg/m³), for the rubble cut.
     pub target_density: f64,
+    /// The axis depth against the t = 0 field ([`Measurer::calibrate`]); `None` before
+    /// calibration or when inactive.
+    pub axis: Option<AxisDepth>,
 }
 
 /// β and the ejecta at one instant.
@@ -87,11 +90,7 @@ impl Measurer {
     /// The crater options: the setup's bin, one bin as the depth threshold, the
     /// measured offset of the top layer, the setup's spall damage.
     pub fn crater_options(&self) -> CraterOptions {
-        let geometry = match self.geometry {
-            GeometryKind::ThreeD | GeometryKind::ThreeDQuarter => Geometry::ThreeD,
-            GeometryKind::Rz => Geometry::Axisymmetric,
-        };
-        let mut o = CraterOptions::new(geometry, self.setup.crater_bin);
+        let mut o = CraterOptions::new(self.diagnostic_geometry(), self.setup.crater_bin);
         o.top_offset = self.top_offset;
         o.spall_damage = self.setup.spall_damage;
         o.density_cut = self.setup.rubble_density.map(|f| DensityCut {
@@ -101,11 +100,34 @@ impl Measurer {
         o
     }
 
+    /// How the diagnostics measure the distance from the axis.
+    fn diagnostic_geometry(&self) -> Geometry {
+        match self.geometry {
+            GeometryKind::ThreeD | GeometryKind::ThreeDQuarter => Geometry::ThreeD,
+            GeometryKind::Rz => Geometry::Axisymmetric,
+        }
+    }
+
+    /// The target's volume-fraction field on the axis now.
+    fn axis_field(&self, a: &Arrays) -> Result<AxisField, sph_diagnostics::ImpactError> {
+        AxisField::new(
+            &a.view(),
+            &self.criterion(),
+            self.diagnostic_geometry(),
+            self.setup.axis_kernel_width,
+        )
+    }
+
     /// Sets the top-layer offset from the untouched target at t = 0: the median depth of
     /// its profile. A lattice's top layer sits half a spacing below the surface and the
     /// variable-resolution layers somewhere below it; with the offset an untouched bed
-    /// reads depth 0 (docs/diagnostics.md §4.1).
+    /// reads depth 0 (docs/diagnostics.md §4.1). Keeps the t = 0 field on the axis as
+    /// the axis depth's reference (§4.4).
     pub fn calibrate(&mut self, a: &Arrays) -> Result<(), sph_diagnostics::ImpactError> {
+        self.axis = None;
+        if self.active() {
+            self.axis = Some(AxisDepth::new(self.axis_field(a)?, self.setup.surface_z)?);
+        }
         self.top_offset = 0.0;
         if let Some(c) = self.crater(a)? {
             let mut d: Vec<f64> = c
@@ -120,6 +142,15 @@ impl Measurer {
             }
         }
         Ok(())
+    }
+
+    /// The crater depth on the axis from the volume fraction (m); NaN when inactive or
+    /// when the axis is empty down to the bottom of the target.
+    pub fn axis_depth(&self, a: &Arrays) -> Result<f64, sph_diagnostics::ImpactError> {
+        match &self.axis {
+            Some(axis) => axis.depth(&self.axis_field(a)?),
+            None => Ok(f64::NAN),
+        }
     }
 
     /// The crater; `None` when inactive.
@@ -148,12 +179,14 @@ mod tests {
                 ejecta_bin: 0.02,
                 spall_damage: None,
                 rubble_density,
+                axis_kernel_width: 2.5e-3,
             },
             projectile_mass: 1.0,
             initial_target_momentum_z: 0.0,
             geometry: GeometryKind::Rz,
             top_offset: 0.0,
             target_density: 2876.0,
+            axis: None,
         }
     }
 

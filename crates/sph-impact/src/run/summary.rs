@@ -88,6 +88,11 @@ pub struct RunSummary {
     pub bowl_diameter_m: f64,
     /// Crater depth (m).
     pub crater_depth_m: f64,
+    /// Crater depth on the axis from the target's volume fraction (m;
+    /// docs/diagnostics.md §4.4).
+    pub crater_axis_depth_m: f64,
+    /// Support radius of the kernel that reads that volume fraction (m).
+    pub crater_axis_kernel_width_m: f64,
     /// Highest rim above the surface (m).
     pub rim_height_m: f64,
     /// β = 1 + P_ej/P_imp.

@@ -29,6 +29,8 @@ pub struct DiagnosticSetup {
     /// Fraction of the target's reference density below which its material is rubble,
     /// not crater wall; `None` off.
     pub rubble_density: Option<f64>,
+    /// Support radius of the axis depth's kernel (m).
+    pub axis_kernel_width: f64,
 }
 
 impl DiagnosticSetup {
@@ -128,6 +130,25 @@ impl Scene {
                     / resolution_scale
             }
         };
+        let axis_kernel_width = match d.axis_kernel_width {
+            Some(w) if w > 0.0 && w.is_finite() => w,
+            Some(w) => {
+                return Err(invalid(
+                    "diagnostics.axis_kernel_width",
+                    w,
+                    "must be positive (m)",
+                ));
+            }
+            // The finest target particles' own support radius at rest.
+            None => {
+                self.solver.scheme().n_target
+                    * targets
+                        .iter()
+                        .map(|&t| self.bodies[t].placement.finest_spacing())
+                        .fold(f64::INFINITY, f64::min)
+                    / resolution_scale
+            }
+        };
         let ejecta_tolerance = d.ejecta_tolerance.unwrap_or(0.0);
         if !(ejecta_tolerance >= 0.0 && ejecta_tolerance.is_finite()) {
             return Err(invalid(
@@ -176,6 +197,7 @@ impl Scene {
             ejecta_bin,
             spall_damage,
             rubble_density,
+            axis_kernel_width,
         })
     }
 }

@@ -81,4 +81,9 @@ pub struct DiagnosticsSettings {
     /// (the solver's fragmentation threshold), 0 turns it off (docs/diagnostics.md §4.1).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub rubble_density: Option<f64>,
+    /// Support radius H (m) of the kernel that reads the target's volume fraction on the
+    /// impact axis for the axis depth; default n_target × the target's finest spacing
+    /// (docs/diagnostics.md §4.4).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub axis_kernel_width: Option<f64>,
 }
