@@ -107,6 +107,14 @@ fn print_comparison(s: &RunSummary, e: &sph_examples::Experiment) {
             mm(e.study.1),
         ),
         (
+            // docs/diagnostics.md §4.4: the volume fraction on the axis, not one bin.
+            "  on the axis",
+            mm(s.crater_axis_depth_m),
+            mm(e.depth),
+            relative(s.crater_axis_depth_m, e.depth),
+            "—".into(),
+        ),
+        (
             "β (from the ejecta)",
             format!("{:.3}", s.beta),
             format!("{:.2}", e.beta),
