@@ -126,7 +126,12 @@ impl Measurer {
     pub fn calibrate(&mut self, a: &Arrays) -> Result<(), sph_diagnostics::ImpactError> {
         self.axis = None;
         if self.active() {
-            self.axis = Some(AxisDepth::new(self.axis_field(a)?, self.setup.surface_z)?);
+            // A target that does not reach the axis (an offset or hollow body) has no
+            // depth there: NaN, not a failed run.
+            let field = self.axis_field(a)?;
+            if !field.is_empty() {
+                self.axis = Some(AxisDepth::new(field, self.setup.surface_z)?);
+            }
         }
         self.top_offset = 0.0;
         if let Some(c) = self.crater(a)? {
@@ -269,5 +274,50 @@ mod tests {
         assert!((cut.depth - 10.5e-3).abs() < 1e-12, "{}", cut.depth);
         assert!((kept.depth - 6.0e-3).abs() < 1e-12, "{}", kept.depth);
         assert!((cut.diameter - 6.0e-3).abs() < 1e-12, "{}", cut.diameter);
+    }
+
+    /// Rings of a uniform bed 1 mm apart from radius `r_min` out to 20 mm, 10 mm deep.
+    fn bed(r_min: f64) -> Arrays {
+        let mut a = Arrays {
+            position: Vec::new(),
+            velocity: Vec::new(),
+            mass: Vec::new(),
+            body: Vec::new(),
+            damage: Vec::new(),
+            density: Vec::new(),
+            specific_energy: Vec::new(),
+        };
+        for i in 0..20 {
+            let r = (i as f64 + 0.5) * 1e-3;
+            if r < r_min {
+                continue;
+            }
+            for k in 0..10 {
+                a.position.push([r, 0.0, -(k as f64 + 0.5) * 1e-3]);
+                a.mass.push(2.0 * std::f64::consts::PI * r * 1e-6 * 2876.0);
+            }
+        }
+        let n = a.position.len();
+        a.velocity = vec![[0.0; 3]; n];
+        a.body = vec![1; n];
+        a.damage = vec![0.0; n];
+        a.density = vec![2876.0; n];
+        a.specific_energy = vec![0.0; n];
+        a
+    }
+
+    #[test]
+    fn the_axis_depth_is_read_against_the_start_and_is_nan_off_the_axis() {
+        let mut m = measurer(None);
+        m.calibrate(&bed(0.0)).unwrap();
+        // The untouched bed reads its own surface, within a tenth of its spacing.
+        let d = m.axis_depth(&bed(0.0)).unwrap();
+        assert!(d.abs() < 1e-4, "{d}");
+        // A target that does not reach the axis (a hollow cylinder with a 5 mm bore)
+        // calibrates, and its axis depth is NaN rather than a failed run.
+        let mut hollow = measurer(None);
+        hollow.calibrate(&bed(5e-3)).unwrap();
+        assert!(hollow.axis.is_none());
+        assert!(hollow.axis_depth(&bed(5e-3)).unwrap().is_nan());
     }
 }
