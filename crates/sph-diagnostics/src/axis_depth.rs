@@ -223,19 +223,24 @@ mod tests {
         x
     }
 
-    fn field(x: &[[f64; 3]], d: f64, width: f64) -> AxisField {
+    /// The field of target particles (body 1) at rest at `x` with masses `m` and
+    /// density 1000 kg/m³.
+    fn at_rest(x: &[[f64; 3]], m: &[f64], geometry: Geometry, width: f64) -> AxisField {
         let v = vec![[0.0; 3]; x.len()];
-        let m = vec![d * d * d * 1000.0; x.len()];
         let rho = vec![1000.0; x.len()];
         let body = vec![1; x.len()];
-        let view = ParticleView::new(x, &v, &m, &body).with_density(&rho);
-        AxisField::new(
-            &view,
-            &EjectaCriterion::new(&[1], 0.0),
+        let view = ParticleView::new(x, &v, m, &body).with_density(&rho);
+        AxisField::new(&view, &EjectaCriterion::new(&[1], 0.0), geometry, width).unwrap()
+    }
+
+    /// The field of the cells `x` of a block `d` wide (mass d³ρ).
+    fn field(x: &[[f64; 3]], d: f64, width: f64) -> AxisField {
+        at_rest(
+            x,
+            &vec![d * d * d * 1000.0; x.len()],
             Geometry::ThreeD,
             width,
         )
-        .unwrap()
     }
 
     #[test]
@@ -285,55 +290,32 @@ mod tests {
         let d = 0.5e-3;
         let width = 2.5 * d;
         let (hole, floor) = (2e-3, -5e-3);
-        let mut rings = Vec::new();
-        let mut ring_mass = Vec::new();
-        for i in 0..16 {
-            for k in 0..40 {
-                let (r, z) = ((i as f64 + 0.5) * d, -(k as f64 + 0.5) * d);
-                if r < hole && z > floor {
-                    continue;
-                }
-                rings.push([r, 0.0, z]);
-                ring_mass.push(2.0 * std::f64::consts::PI * r * d * d * 1000.0);
-            }
-        }
-        let read_rings = |x: &[[f64; 3]], m: &[f64]| {
-            let v = vec![[0.0; 3]; x.len()];
-            let rho = vec![1000.0; x.len()];
-            let body = vec![1; x.len()];
-            let view = ParticleView::new(x, &v, m, &body).with_density(&rho);
-            AxisField::new(
-                &view,
-                &EjectaCriterion::new(&[1], 0.0),
-                Geometry::Axisymmetric,
-                width,
-            )
-            .unwrap()
-        };
         let all: Vec<[f64; 3]> = (0..16)
             .flat_map(|i| (0..40).map(move |k| [(i as f64 + 0.5) * d, 0.0, -(k as f64 + 0.5) * d]))
             .collect();
-        let all_mass: Vec<f64> = all
+        let rings: Vec<[f64; 3]> = all
             .iter()
-            .map(|p| 2.0 * std::f64::consts::PI * p[0] * d * d * 1000.0)
+            .copied()
+            .filter(|p| !(p[0] < hole && p[2] > floor))
             .collect();
-        let rz = AxisDepth::new(read_rings(&all, &all_mass), 0.0).unwrap();
-        let rz_depth = rz.depth(&read_rings(&rings, &ring_mass)).unwrap();
+        let read_rings = |x: &[[f64; 3]]| {
+            let m: Vec<f64> = x
+                .iter()
+                .map(|p| 2.0 * std::f64::consts::PI * p[0] * d * d * 1000.0)
+                .collect();
+            at_rest(x, &m, Geometry::Axisymmetric, width)
+        };
+        let rz = AxisDepth::new(read_rings(&all), 0.0).unwrap();
+        let rz_depth = rz.depth(&read_rings(&rings)).unwrap();
 
         let quarter = |x: Vec<[f64; 3]>| {
             let q: Vec<[f64; 3]> = x.into_iter().filter(|p| p[0] > 0.0 && p[1] > 0.0).collect();
-            let v = vec![[0.0; 3]; q.len()];
-            let m = vec![4.0 * d * d * d * 1000.0; q.len()];
-            let rho = vec![1000.0; q.len()];
-            let body = vec![1; q.len()];
-            let view = ParticleView::new(&q, &v, &m, &body).with_density(&rho);
-            AxisField::new(
-                &view,
-                &EjectaCriterion::new(&[1], 0.0),
+            at_rest(
+                &q,
+                &vec![4.0 * d * d * d * 1000.0; q.len()],
                 Geometry::ThreeD,
                 width,
             )
-            .unwrap()
         };
         let q3 = AxisDepth::new(quarter(block(d, 8e-3, -20e-3, 0.0, 0.0)), 0.0).unwrap();
         let q3_depth = q3

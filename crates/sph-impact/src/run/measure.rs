@@ -195,39 +195,42 @@ mod tests {
         }
     }
 
+    /// Target particles (body 1) at rest, undamaged, at `position` with `mass` and
+    /// `density`.
+    fn at_rest(position: Vec<[f64; 3]>, mass: Vec<f64>, density: Vec<f64>) -> Arrays {
+        let n = position.len();
+        Arrays {
+            position,
+            velocity: vec![[0.0; 3]; n],
+            mass,
+            body: vec![1; n],
+            damage: vec![0.0; n],
+            density,
+            specific_energy: vec![0.0; n],
+        }
+    }
+
     /// A crater 3 mm in radius with its floor at z = −10.5 mm, and above the floor in
     /// each of its bins a dilated ring (0.3 ρ0) at z = −6 mm, below the surface and at
     /// rest, so not ejecta.
     fn crater_with_rubble(m: &Measurer) -> Crater {
-        let n = 40;
-        let mut a = Arrays {
-            position: Vec::new(),
-            velocity: Vec::new(),
-            mass: Vec::new(),
-            body: Vec::new(),
-            damage: Vec::new(),
-            density: Vec::new(),
-            specific_energy: Vec::new(),
-        };
-        for k in 0..n {
+        let (mut position, mut density) = (Vec::new(), Vec::new());
+        for k in 0..40 {
             let r = (k as f64 + 0.5) * 1e-3;
             let z = if k < 3 { -10.5e-3 } else { -0.5e-3 };
-            for (z, rho) in [(z, 2876.0), (z - 1e-3, 2876.0)] {
-                a.position.push([r, 0.0, z]);
-                a.density.push(rho);
+            for z in [z, z - 1e-3] {
+                position.push([r, 0.0, z]);
+                density.push(2876.0);
             }
         }
         for r in [0.5e-3, 1.5e-3, 2.5e-3] {
-            a.position.push([r, 0.0, -6.0e-3]);
-            a.density.push(0.3 * 2876.0);
+            position.push([r, 0.0, -6.0e-3]);
+            density.push(0.3 * 2876.0);
         }
-        let count = a.position.len();
-        a.velocity = vec![[0.0; 3]; count];
-        a.mass = vec![1.0; count];
-        a.body = vec![1; count];
-        a.damage = vec![0.0; count];
-        a.specific_energy = vec![0.0; count];
-        m.crater(&a).unwrap().unwrap()
+        let mass = vec![1.0; position.len()];
+        m.crater(&at_rest(position, mass, density))
+            .unwrap()
+            .unwrap()
     }
 
     /// Two target particles and two projectile particles, one of each above the surface
@@ -278,32 +281,19 @@ mod tests {
 
     /// Rings of a uniform bed 1 mm apart from radius `r_min` out to 20 mm, 10 mm deep.
     fn bed(r_min: f64) -> Arrays {
-        let mut a = Arrays {
-            position: Vec::new(),
-            velocity: Vec::new(),
-            mass: Vec::new(),
-            body: Vec::new(),
-            damage: Vec::new(),
-            density: Vec::new(),
-            specific_energy: Vec::new(),
-        };
+        let (mut position, mut mass) = (Vec::new(), Vec::new());
         for i in 0..20 {
             let r = (i as f64 + 0.5) * 1e-3;
             if r < r_min {
                 continue;
             }
             for k in 0..10 {
-                a.position.push([r, 0.0, -(k as f64 + 0.5) * 1e-3]);
-                a.mass.push(2.0 * std::f64::consts::PI * r * 1e-6 * 2876.0);
+                position.push([r, 0.0, -(k as f64 + 0.5) * 1e-3]);
+                mass.push(2.0 * std::f64::consts::PI * r * 1e-6 * 2876.0);
             }
         }
-        let n = a.position.len();
-        a.velocity = vec![[0.0; 3]; n];
-        a.body = vec![1; n];
-        a.damage = vec![0.0; n];
-        a.density = vec![2876.0; n];
-        a.specific_energy = vec![0.0; n];
-        a
+        let density = vec![2876.0; position.len()];
+        at_rest(position, mass, density)
     }
 
     #[test]

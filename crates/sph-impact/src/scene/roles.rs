@@ -118,37 +118,31 @@ impl Scene {
                 .first()
                 .map_or(v(projectile).length(), |&t| (v(projectile) - v(t)).length()),
         };
-        let crater_bin = match d.crater_bin {
-            Some(b) if b > 0.0 && b.is_finite() => b,
-            Some(b) => return Err(invalid("diagnostics.crater_bin", b, "must be positive (m)")),
-            None => {
-                targets
-                    .iter()
-                    .map(|&t| self.bodies[t].placement.finest_spacing())
-                    .fold(f64::INFINITY, f64::min)
-                    .min(self.bodies[projectile].placement.finest_spacing())
-                    / resolution_scale
-            }
+        // Lengths in metres: positive when given, else a default from the spacings.
+        let length = |key: &str, value: Option<f64>, default: f64| match value {
+            None => Ok(default),
+            Some(x) if x > 0.0 && x.is_finite() => Ok(x),
+            Some(x) => Err(invalid(key, x, "must be positive (m)")),
         };
-        let axis_kernel_width = match d.axis_kernel_width {
-            Some(w) if w > 0.0 && w.is_finite() => w,
-            Some(w) => {
-                return Err(invalid(
-                    "diagnostics.axis_kernel_width",
-                    w,
-                    "must be positive (m)",
-                ));
-            }
-            // The finest target particles' own support radius at rest.
-            None => {
-                self.solver.scheme().n_target
-                    * targets
-                        .iter()
-                        .map(|&t| self.bodies[t].placement.finest_spacing())
-                        .fold(f64::INFINITY, f64::min)
-                    / resolution_scale
-            }
+        let finest = |bodies: &[usize]| {
+            bodies
+                .iter()
+                .map(|&b| self.bodies[b].placement.finest_spacing())
+                .fold(f64::INFINITY, f64::min)
+                / resolution_scale
         };
+        let finest_target = finest(&targets);
+        let crater_bin = length(
+            "diagnostics.crater_bin",
+            d.crater_bin,
+            finest_target.min(finest(std::slice::from_ref(&projectile))),
+        )?;
+        // By default the finest target particles' own support radius at rest.
+        let axis_kernel_width = length(
+            "diagnostics.axis_kernel_width",
+            d.axis_kernel_width,
+            self.solver.scheme().n_target * finest_target,
+        )?;
         let ejecta_tolerance = d.ejecta_tolerance.unwrap_or(0.0);
         if !(ejecta_tolerance >= 0.0 && ejecta_tolerance.is_finite()) {
             return Err(invalid(
