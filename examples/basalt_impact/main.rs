@@ -230,7 +230,7 @@ fn main() -> ExitCode {
         threads: Some(threads),
         end_time: Some(end_time),
         resolution_scale: scale,
-        quiet: false,
+        ..RunOptions::default()
     };
     match run(&scene, &out, &options) {
         Ok(summary) => {

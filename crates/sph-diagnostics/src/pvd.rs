@@ -25,6 +25,12 @@ impl Pvd {
         self
     }
 
+    /// The snapshots so far, (time, file), in the order pushed (to rebuild the
+    /// collection when a run resumes).
+    pub fn entries(&self) -> &[(f64, String)] {
+        &self.entries
+    }
+
     /// Number of snapshots.
     pub fn len(&self) -> usize {
         self.entries.len()

@@ -40,6 +40,14 @@ enum Command {
         /// No progress bar and no result lines (for scripts).
         #[arg(long)]
         quiet: bool,
+        /// Write a checkpoint (checkpoint.cbor in the run directory) at every snapshot
+        /// before the end, so that a stopped run can be resumed.
+        #[arg(long)]
+        checkpoint: bool,
+        /// Continue the run in the run directory from its checkpoint (same scene and
+        /// --resolution-scale; --end-time may be later), instead of starting at t = 0.
+        #[arg(long)]
+        resume: bool,
     },
     /// Validate a scene, place its bodies, and estimate the run's first time step, steps,
     /// runtime and memory.
@@ -111,12 +119,16 @@ fn main() -> ExitCode {
             end_time,
             resolution_scale,
             quiet,
+            checkpoint,
+            resume,
         } => {
             let options = RunOptions {
                 threads: cli.threads,
                 end_time,
                 resolution_scale,
                 quiet,
+                checkpoint,
+                resume,
             };
             sph_impact::cli::run_scene(&scene, out.as_deref(), &options).map(|_| ())
         }

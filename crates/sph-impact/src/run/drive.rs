@@ -4,6 +4,7 @@
 
 use crate::Simulation;
 use crate::run::arrays::Arrays;
+use crate::run::checkpoint::{CHECKPOINT_FILE, RunCheckpoint};
 use crate::run::error::RunError;
 use crate::run::history::{History, HistoryRow};
 use crate::run::measure::{BetaMeasure, Measurer};
@@ -42,8 +43,64 @@ pub(crate) struct Stepped<D: SceneDimension> {
     pub particle_steps: u64,
     /// Particles in free flight at the end (`SchemeConfig::free_flight_above`).
     pub free_flight: usize,
-    /// Wall time of the stepping alone (s).
+    /// Wall time of the stepping alone (s), the earlier parts of a resumed run included.
     pub stepping: f64,
+    /// Wall time of the earlier parts of a resumed run (s; 0 for a run in one go).
+    pub wall_before: f64,
+    /// The checkpoint times a resumed run started from (s).
+    pub resumed_from: Vec<f64>,
+}
+
+/// The work of a resumed run's earlier parts (all zero for a run in one go).
+#[derive(Default)]
+struct Before {
+    steps: u64,
+    particle_steps: u64,
+    stepping: f64,
+    wall: f64,
+    resumed_from: Vec<f64>,
+}
+
+/// The snapshots written so far and the crater they last measured.
+struct Outputs {
+    pvd: Pvd,
+    /// The next snapshot's number.
+    index: usize,
+    crater: CraterReading,
+}
+
+impl Outputs {
+    /// Writes the next snapshot of `sim`, measures the crater on it and adds a history
+    /// row after the step `step` (`None` at t = 0).
+    fn take<D: SceneDimension>(
+        &mut self,
+        sim: &Simulation<D, KernelChoice>,
+        copies: f64,
+        dir: &Path,
+        measurer: &Measurer,
+        history: &mut History,
+        step: Option<&StepInfo>,
+    ) -> Result<(), RunError> {
+        let a = Arrays::of(sim, copies);
+        let (pressure, _) = sim.pressure_and_sound_speed();
+        snapshot::write_snapshot(sim, &a, &pressure, dir, self.index, &mut self.pvd)?;
+        self.index += 1;
+        if let Some(c) = measurer.crater(&a)? {
+            self.crater = CraterReading {
+                depth: c.depth,
+                diameter: c.diameter,
+                axis_depth: measurer.axis_depth(&a)?,
+            };
+        }
+        history.push(row(
+            sim,
+            copies,
+            &measurer.beta(&a)?,
+            self.crater,
+            step,
+            true,
+        ))
+    }
 }
 
 impl Job<'_> {
@@ -83,36 +140,49 @@ impl Job<'_> {
         let interval = scene.output.interval(end_time);
         let history_every = scene.output.history_every.unwrap_or(1);
         let initial = Totals::of(&sim, copies);
-        let mut history = History::create(&dir.join("history.csv"))?;
-        let mut pvd = Pvd::new();
+        let history_path = dir.join("history.csv");
         let mut progress = Progress::new(self.options.quiet, end_time, n);
-
-        let mut snapshot_index = 0;
-        let mut crater = CraterReading::default();
-        let mut take_snapshot = |sim: &Simulation<D, KernelChoice>,
-                                 history: &mut History,
-                                 step: Option<&StepInfo>,
-                                 crater: &mut CraterReading|
-         -> Result<(), RunError> {
-            let a = Arrays::of(sim, copies);
-            let (pressure, _) = sim.pressure_and_sound_speed();
-            snapshot::write_snapshot(sim, &a, &pressure, dir, snapshot_index, &mut pvd)?;
-            snapshot_index += 1;
-            if let Some(c) = measurer.crater(&a)? {
-                *crater = CraterReading {
-                    depth: c.depth,
-                    diameter: c.diameter,
-                    axis_depth: measurer.axis_depth(&a)?,
-                };
-            }
-            history.push(row(sim, copies, &measurer.beta(&a)?, *crater, step, true))?;
-            Ok(())
+        let mut outputs = Outputs {
+            pvd: Pvd::new(),
+            index: 0,
+            crater: CraterReading::default(),
         };
-        take_snapshot(&sim, &mut history, None, &mut crater)?;
-        let mut next_snapshot = interval.min(end_time);
+        // The work of the run's earlier parts, when it resumes from a checkpoint.
+        let mut before = Before::default();
+        let (mut history, mut next_snapshot) = if self.options.resume {
+            let c = RunCheckpoint::<D>::read(dir, scene, self.options, end_time)?;
+            let history = History::resume(&history_path, c.history_rows)?;
+            for (t, file) in &c.pvd {
+                outputs.pvd.push(*t, file.clone());
+            }
+            outputs.index = c.snapshot_index;
+            let [depth, diameter, axis_depth] = c.crater;
+            outputs.crater = CraterReading {
+                depth,
+                diameter,
+                axis_depth,
+            };
+            before = Before {
+                steps: c.steps,
+                particle_steps: c.particle_steps,
+                stepping: c.stepping_s,
+                wall: c.wall_s,
+                resumed_from: c.resumed_from_s,
+            };
+            before.resumed_from.push(c.solver.state.time);
+            sim.restore(c.solver).map_err(|e| RunError::Resume {
+                path: dir.join(CHECKPOINT_FILE).display().to_string(),
+                reason: e.to_string(),
+            })?;
+            (history, c.next_snapshot)
+        } else {
+            let mut history = History::create(&history_path)?;
+            outputs.take(&sim, copies, dir, &measurer, &mut history, None)?;
+            (history, interval.min(end_time))
+        };
         let t_step = Instant::now();
-        let mut steps: u64 = 0;
-        let mut particle_steps: u64 = 0;
+        let mut steps: u64 = before.steps;
+        let mut particle_steps: u64 = before.particle_steps;
         let mut free_flight = 0;
         let tol = 1e-12 * end_time;
         let failed = |sim: &Simulation<D, KernelChoice>, e: crate::SolverError| RunError::Solver {
@@ -141,10 +211,40 @@ impl Job<'_> {
             }
             if at_snapshot || at_end {
                 sim.with_free_flight(|sim| {
-                    take_snapshot(sim, &mut history, Some(&info), &mut crater)
+                    outputs.take(sim, copies, dir, &measurer, &mut history, Some(&info))
                 })?;
                 while next_snapshot <= sim.state.time + tol {
                     next_snapshot += interval;
+                }
+                if self.options.checkpoint && !at_end {
+                    // The end's state is not a step's (density synchronised, flight
+                    // ended): a run resumed to a later end time restarts from here.
+                    history.flush()?;
+                    let (format, version, geometry) = RunCheckpoint::<D>::tags();
+                    RunCheckpoint {
+                        format,
+                        version,
+                        geometry,
+                        scene: RunCheckpoint::<D>::scene_text(scene)?,
+                        resolution_scale: self.options.resolution_scale,
+                        end_time,
+                        next_snapshot,
+                        snapshot_index: outputs.index,
+                        pvd: outputs.pvd.entries().to_vec(),
+                        crater: [
+                            outputs.crater.depth,
+                            outputs.crater.diameter,
+                            outputs.crater.axis_depth,
+                        ],
+                        steps,
+                        particle_steps,
+                        stepping_s: before.stepping + t_step.elapsed().as_secs_f64(),
+                        wall_s: before.wall + self.wall.elapsed().as_secs_f64(),
+                        history_rows: history.rows.len(),
+                        resumed_from_s: before.resumed_from.clone(),
+                        solver: sim.checkpoint(),
+                    }
+                    .write(dir)?;
                 }
             } else if steps.is_multiple_of(history_every) {
                 let r = sim.with_free_flight(|sim| -> Result<HistoryRow, RunError> {
@@ -153,7 +253,7 @@ impl Job<'_> {
                         sim,
                         copies,
                         &measurer.beta(&a)?,
-                        crater,
+                        outputs.crater,
                         Some(&info),
                         false,
                     ))
@@ -162,7 +262,7 @@ impl Job<'_> {
             }
             progress.update(sim.state.time, steps, false);
         }
-        let stepping = t_step.elapsed().as_secs_f64();
+        let stepping = before.stepping + t_step.elapsed().as_secs_f64();
         progress.finish(sim.state.time, steps);
         history.flush()?;
         finish::summarise(
@@ -177,6 +277,8 @@ impl Job<'_> {
                 particle_steps,
                 free_flight,
                 stepping,
+                wall_before: before.wall,
+                resumed_from: before.resumed_from,
             },
         )
     }

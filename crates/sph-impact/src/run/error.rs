@@ -21,6 +21,15 @@ pub enum RunError {
         /// What is allowed.
         reason: &'static str,
     },
+    /// A run cannot resume from its directory's checkpoint (bad input: a missing or
+    /// foreign checkpoint, another scene or resolution, a history that does not match).
+    #[error("cannot resume from {path}: {reason}")]
+    Resume {
+        /// The file.
+        path: String,
+        /// What is wrong.
+        reason: String,
+    },
     /// The solver stopped (the state became unphysical, the step collapsed).
     #[error("run failed at t = {time:e} s (step {step}): {message}")]
     Solver {
@@ -47,7 +56,10 @@ pub enum RunError {
 impl RunError {
     /// True for errors in the input (scene, options) rather than in the run.
     pub fn is_bad_input(&self) -> bool {
-        matches!(self, RunError::Scene(_) | RunError::Option { .. })
+        matches!(
+            self,
+            RunError::Scene(_) | RunError::Option { .. } | RunError::Resume { .. }
+        )
     }
 
     /// An I/O error on `path`.

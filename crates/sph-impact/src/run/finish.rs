@@ -28,6 +28,8 @@ pub(crate) fn summarise<D: SceneDimension>(
         particle_steps,
         free_flight,
         stepping,
+        wall_before,
+        resumed_from,
     } = run;
     let (dir, setup) = (job.dir, &measurer.setup);
     let n = sim.state.particles.len();
@@ -142,10 +144,11 @@ pub(crate) fn summarise<D: SceneDimension>(
         axis_crossings: sim.axis_crossings,
         axis_crossings_midpoint: sim.axis_crossings_midpoint,
         free_flight_particles: free_flight,
+        resumed_from_s: resumed_from,
     };
     summary.set_beta(&beta);
     summary.beta_change_last_half = beta_change_last_half(&history.rows);
-    summary.wall_time_s = job.wall.elapsed().as_secs_f64();
+    summary.wall_time_s = wall_before + job.wall.elapsed().as_secs_f64();
     let path = dir.join("summary.json");
     let text = serde_json::to_string_pretty(&summary).map_err(|e| RunError::io(&path, e))?;
     std::fs::write(&path, text).map_err(|e| RunError::io(&path, e))?;

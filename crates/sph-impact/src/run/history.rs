@@ -108,6 +108,47 @@ impl History {
         })
     }
 
+    /// Re-opens `path` for a resumed run: keeps its header and its first `rows` rows
+    /// (those written up to the checkpoint) and drops the rest, which the resumed run
+    /// writes again. The kept rows are read back exactly (`{:e}` and `{}` print the
+    /// shortest text that reads back to the same f64) for the plots and the summary.
+    pub fn resume(path: &Path, rows: usize) -> Result<Self, RunError> {
+        let refuse = |reason: String| RunError::Resume {
+            path: path.display().to_string(),
+            reason,
+        };
+        let text = std::fs::read_to_string(path).map_err(|e| refuse(e.to_string()))?;
+        let mut lines = text.lines();
+        let header = HISTORY_COLUMNS.join(",");
+        if lines.next() != Some(header.as_str()) {
+            return Err(refuse("its header is not this program's".to_owned()));
+        }
+        let kept: Vec<&str> = lines.take(rows).collect();
+        if kept.len() < rows {
+            return Err(refuse(format!(
+                "it has {} rows, the checkpoint was written after row {rows}",
+                kept.len()
+            )));
+        }
+        let parsed = kept
+            .iter()
+            .enumerate()
+            .map(|(k, line)| {
+                parse_row(line).ok_or_else(|| refuse(format!("row {} cannot be read", k + 1)))
+            })
+            .collect::<Result<Vec<_>, _>>()?;
+        let file = File::create(path).map_err(|e| RunError::io(path, e))?;
+        let mut out = BufWriter::new(file);
+        for line in std::iter::once(header.as_str()).chain(kept) {
+            writeln!(out, "{line}").map_err(|e| RunError::io(path, e))?;
+        }
+        Ok(Self {
+            path: path.to_owned(),
+            out,
+            rows: parsed,
+        })
+    }
+
     pub fn push(&mut self, r: HistoryRow) -> Result<(), RunError> {
         writeln!(
             self.out,
@@ -140,6 +181,38 @@ impl History {
     }
 }
 
+/// A row as [`History::push`] writes it; `None` if it does not read.
+fn parse_row(line: &str) -> Option<HistoryRow> {
+    let f: Vec<&str> = line.split(',').collect();
+    if f.len() != HISTORY_COLUMNS.len() {
+        return None;
+    }
+    let x = |k: usize| f[k].parse::<f64>().ok();
+    Some(HistoryRow {
+        t: x(0)?,
+        step: f[1].parse().ok()?,
+        dt: x(2)?,
+        beta: x(3)?,
+        beta_target: x(4)?,
+        ejecta_mass: x(5)?,
+        crater_depth: x(6)?,
+        crater_diameter: x(7)?,
+        kinetic: x(8)?,
+        internal: x(9)?,
+        // Column 10 is kinetic + internal.
+        momentum_z: x(11)?,
+        crater_measured: match f[12] {
+            "0" => false,
+            "1" => true,
+            _ => return None,
+        },
+        dt_reason: crate::solver::timestep::reason_named(f[13])?,
+        dt_particle_id: f[14].parse().ok()?,
+        beta_pendulum: x(15)?,
+        crater_axis_depth: x(16)?,
+    })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -166,6 +239,82 @@ mod tests {
         assert_eq!(beta_change_last_half(&flat), 0.0);
         let falling = rows(&[(0.0, 1.0), (1e-4, 2.0), (2e-4, 1.6)]);
         assert!((beta_change_last_half(&falling) + 0.25).abs() < 1e-12);
+    }
+
+    #[test]
+    fn a_resumed_history_reads_its_rows_back_to_the_bit_and_drops_the_rest() {
+        let dir = std::env::temp_dir().join(format!("history-resume-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let path = dir.join("history.csv");
+        let odd = [f64::NAN, f64::INFINITY, -0.0, 5e-324, 1.0 / 3.0, -2.5e300];
+        let written: Vec<HistoryRow> = odd
+            .iter()
+            .enumerate()
+            .map(|(k, &x)| HistoryRow {
+                t: 1e-7 * k as f64,
+                step: k as u64 * 7,
+                dt: x,
+                beta: 1.0 + x,
+                beta_target: x / 3.0,
+                beta_pendulum: -x,
+                ejecta_mass: x * 1e-9,
+                crater_depth: x,
+                crater_diameter: 2.0 * x,
+                crater_axis_depth: x + 1e-3,
+                kinetic: x,
+                internal: 0.1 + x,
+                momentum_z: -x,
+                crater_measured: k % 2 == 0,
+                dt_reason: crate::solver::timestep::REASONS[k % 4],
+                dt_particle_id: u64::MAX - k as u64,
+            })
+            .collect();
+        let mut h = History::create(&path).unwrap();
+        for r in &written {
+            h.push(*r).unwrap();
+        }
+        h.flush().unwrap();
+        drop(h);
+        let mut back = History::resume(&path, 4).unwrap();
+        let bits = |r: &HistoryRow| {
+            [
+                r.t,
+                r.dt,
+                r.beta,
+                r.beta_target,
+                r.beta_pendulum,
+                r.ejecta_mass,
+                r.crater_depth,
+                r.crater_diameter,
+                r.crater_axis_depth,
+                r.kinetic,
+                r.internal,
+                r.momentum_z,
+            ]
+            // Every NaN reads back as the one NaN (its sign and payload are not printed).
+            .map(|x| {
+                if x.is_nan() {
+                    f64::NAN.to_bits()
+                } else {
+                    x.to_bits()
+                }
+            })
+        };
+        assert_eq!(back.rows.len(), 4);
+        for (a, b) in written.iter().zip(&back.rows) {
+            assert_eq!(bits(a), bits(b));
+            assert_eq!(
+                (a.step, a.crater_measured, a.dt_reason, a.dt_particle_id),
+                (b.step, b.crater_measured, b.dt_reason, b.dt_particle_id)
+            );
+        }
+        // The rows after the fourth are gone from the file; new ones follow the kept.
+        back.push(written[5]).unwrap();
+        back.flush().unwrap();
+        let text = std::fs::read_to_string(&path).unwrap();
+        assert_eq!(text.lines().count(), 1 + 5);
+        assert!(History::resume(&path, 6).is_err());
+        std::fs::remove_dir_all(&dir).unwrap();
     }
 
     #[test]

@@ -18,6 +18,7 @@
 //! 2π × (mass per radian), so every total in the outputs is the whole body's.
 
 mod arrays;
+mod checkpoint;
 mod drive;
 mod error;
 mod finish;
@@ -28,6 +29,7 @@ mod progress;
 mod snapshot;
 mod summary;
 
+pub use checkpoint::CHECKPOINT_FILE;
 pub use error::RunError;
 pub use history::{HISTORY_COLUMNS, HistoryRow, beta_change_last_half};
 pub use summary::{BodyDamageSummary, RunSummary, Totals};
@@ -48,6 +50,14 @@ pub struct RunOptions {
     pub resolution_scale: f64,
     /// No progress line.
     pub quiet: bool,
+    /// Write a checkpoint ([`CHECKPOINT_FILE`] in the run directory) at every snapshot
+    /// before the end, to resume from.
+    pub checkpoint: bool,
+    /// Continue from the run directory's checkpoint instead of starting at t = 0: the
+    /// scene and resolution must be those it was written with; the end time may be
+    /// later. `history.csv` keeps its rows up to the checkpoint, and the snapshots after
+    /// it are written again.
+    pub resume: bool,
 }
 
 impl Default for RunOptions {
@@ -57,6 +67,8 @@ impl Default for RunOptions {
             end_time: None,
             resolution_scale: 1.0,
             quiet: false,
+            checkpoint: false,
+            resume: false,
         }
     }
 }

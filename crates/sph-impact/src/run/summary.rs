@@ -168,6 +168,10 @@ pub struct RunSummary {
     /// Particles in free flight at the end (`SchemeConfig::free_flight_above`): out of
     /// the hydrodynamics, moving at constant velocity; they are in every other output.
     pub free_flight_particles: usize,
+    /// The simulated times (s) of the checkpoints this run resumed from, in order; empty
+    /// for a run that went through in one go (docs/scenes.md, "Checkpoints"). The wall
+    /// time and the steps count the work of every part.
+    pub resumed_from_s: Vec<f64>,
 }
 
 impl RunSummary {

@@ -257,7 +257,7 @@ pub(crate) fn activates_on_pseudo_strain(material: &Material) -> bool {
 }
 
 /// Counts of what the damage bounds did over a run (nothing is clamped silently).
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 pub struct DamageEvents {
     /// Updates that raised D to the model's minimum (instant failures).
     pub raised_to_min: u64,

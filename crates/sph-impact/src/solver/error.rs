@@ -5,6 +5,10 @@ use thiserror::Error;
 /// Errors of the solver.
 #[derive(Debug, Error, Clone, PartialEq)]
 pub enum SolverError {
+    /// A checkpoint does not fit the simulation it is restored into
+    /// ([`crate::Simulation::restore`]).
+    #[error("the checkpoint does not fit this set-up: {0}")]
+    BadCheckpoint(String),
     /// A scheme setting out of range.
     #[error("scheme setting {field} = {value}: {reason}")]
     BadConfig {

@@ -19,6 +19,6 @@ pub use config::{DensityForm, EnergyForm, MomentumForm, SchemeConfig, SmoothingM
 pub use damage::DamageEvents;
 pub use error::SolverError;
 pub use material::Material;
-pub use simulation::{Conserved, PhaseTimes, Simulation, StepInfo};
+pub use simulation::{Conserved, PhaseTimes, Simulation, SolverCheckpoint, StepInfo};
 pub use state::State;
 pub use timestep::TimestepVote;

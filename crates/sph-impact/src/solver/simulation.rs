@@ -22,7 +22,7 @@ use crate::solver::pair_kernel::{ScalarPairKernel, TensorPairKernel, equivalent_
 use crate::solver::state::{Extended, State};
 use crate::solver::timestep::{TimestepVote, acceleration_vote, cfl_vote, density_vote};
 use rayon::prelude::*;
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 use sph_core::{
     CellList, Dimension, NeighborList, NeighborSearch, Particles, ScalarSupport, Tensor,
     TensorSupport, Vector,
@@ -31,8 +31,11 @@ use sph_damage::DamageForm;
 use sph_kernel::Kernel;
 use std::time::Instant;
 
+mod checkpoint;
+pub use checkpoint::SolverCheckpoint;
+
 /// Wall-clock seconds spent per phase, and the work done.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
 pub struct PhaseTimes {
     /// Ghosts + neighbour search.
     pub neighbours: f64,
@@ -668,7 +671,7 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
         let mut best = TimestepVote {
             dt: f64::INFINITY,
             particle_id: 0,
-            reason: "none",
+            reason: crate::solver::timestep::REASON_NONE,
         };
         for i in 0..p.len() {
             let dx = self.spacing(state, i);

@@ -1,11 +1,13 @@
 //! The evolved state and the per-stage scratch arrays.
 
 use crate::solver::boundary::{Boundary, Ghost};
+use serde::{Deserialize, Serialize};
 use sph_core::{Dimension, Particles, Tensor};
 
 /// What the integrator evolves: the particles (x, v, m, ρ, e, h, material, id), the
 /// ASPH tensors when in use, and the initial spacing (for the artificial stress).
-#[derive(Clone, Debug)]
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[serde(bound = "")]
 pub struct State<D: Dimension> {
     /// Particle fields.
     pub particles: Particles<D>,

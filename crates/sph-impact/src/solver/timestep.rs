@@ -3,6 +3,24 @@
 
 use serde::Serialize;
 
+/// Why the CFL vote set a step.
+pub const REASON_CFL: &str = "CFL: sound + approach speed";
+/// Why the density vote set a step.
+pub const REASON_DENSITY: &str = "density change";
+/// Why the acceleration vote set a step.
+pub const REASON_ACCELERATION: &str = "acceleration";
+/// The reason of a vote no particle cast (no particles).
+pub const REASON_NONE: &str = "none";
+
+/// Every reason a vote can give, so a reason read back as text (a `history.csv` row of
+/// a resumed run) finds its `&'static str` again ([`reason_named`]).
+pub const REASONS: [&str; 4] = [REASON_CFL, REASON_DENSITY, REASON_ACCELERATION, REASON_NONE];
+
+/// The reason spelled `text`, if it is one of [`REASONS`].
+pub fn reason_named(text: &str) -> Option<&'static str> {
+    REASONS.iter().copied().find(|r| *r == text)
+}
+
 /// One candidate time step.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
 pub struct TimestepVote {
@@ -33,7 +51,7 @@ pub fn cfl_vote(
     TimestepVote {
         dt: cfl * spacing / (sound_speed + approach).max(f64::MIN_POSITIVE),
         particle_id,
-        reason: "CFL: sound + approach speed",
+        reason: REASON_CFL,
     }
 }
 
@@ -48,7 +66,7 @@ pub fn density_vote(cfl: f64, density: f64, rate: f64, particle_id: u64) -> Time
     TimestepVote {
         dt,
         particle_id,
-        reason: "density change",
+        reason: REASON_DENSITY,
     }
 }
 
@@ -67,6 +85,6 @@ pub fn acceleration_vote(
     TimestepVote {
         dt,
         particle_id,
-        reason: "acceleration",
+        reason: REASON_ACCELERATION,
     }
 }
