@@ -12,10 +12,14 @@
 //! then the last `history.csv` row at or before T, and the runtime to T is the run's wall
 //! time prorated by its steps to T (the particle count of a run does not change, so its
 //! cost per step is nearly constant).
+//!
+//! The plot joins the runs of one geometry (RZ, 3-D) in order of wall time, one line per
+//! number and geometry, so that grids of one geometry read as a series and a run of the
+//! other geometry stands beside them (RZ discs on solid lines, 3-D squares on dashed).
 
 use clap::Parser;
 use sph_diagnostics::Figure;
-use sph_diagnostics::plot::{BLUE, GREEN, GREY, Marker, RED, Scale, Style};
+use sph_diagnostics::plot::{BLUE, GREEN, GREY, LegendPos, Marker, RED, Scale, Style};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
@@ -44,6 +48,11 @@ struct Run {
     end_time: f64,
     /// Signed relative errors of Ø, depth, β.
     errors: [f64; 3],
+}
+
+/// The plot's series a run belongs to: "RZ", or "3-D" for the full and quarter models.
+fn family_of(r: &Run) -> &'static str {
+    if r.geometry == "rz" { "RZ" } else { "3-D" }
 }
 
 fn read(dir: &Path, at: Option<f64>) -> Result<Run, String> {
@@ -144,18 +153,32 @@ fn main() -> ExitCode {
         .ylabel("|error| (%)")
         .xscale(Scale::Log)
         .grid(true);
-        let wall: Vec<f64> = runs.iter().map(|r| r.wall).collect();
-        for (k, (name, color)) in [("diameter", BLUE), ("depth", RED), ("beta", GREEN)]
-            .into_iter()
-            .enumerate()
+        // Headroom above the largest error keeps the legend (upper right) off the points.
+        let top = runs
+            .iter()
+            .flat_map(|r| r.errors)
+            .map(|e| 100.0 * e.abs())
+            .filter(|e| e.is_finite())
+            .fold(20.0, f64::max);
+        ax.ylim(0.0, 1.6 * top)?.legend(LegendPos::UpperRight);
+        for (family, marker, dashed) in
+            [("RZ", Marker::Circle, false), ("3-D", Marker::Square, true)]
         {
-            let err: Vec<f64> = runs.iter().map(|r| 100.0 * r.errors[k].abs()).collect();
-            ax.line(&wall, &err, Style::line(color).label(name))?;
-            ax.scatter(
-                &wall,
-                &err,
-                Style::points(color).marker(Marker::Circle).size(9.0),
-            )?;
+            let members: Vec<&Run> = runs.iter().filter(|r| family_of(r) == family).collect();
+            if members.is_empty() {
+                continue;
+            }
+            let wall: Vec<f64> = members.iter().map(|r| r.wall).collect();
+            for (k, (name, color)) in [("diameter", BLUE), ("depth", RED), ("beta", GREEN)]
+                .into_iter()
+                .enumerate()
+            {
+                let err: Vec<f64> = members.iter().map(|r| 100.0 * r.errors[k].abs()).collect();
+                let line = Style::line(color).label(format!("{name} ({family})"));
+                let line = if dashed { line.dashed(4.0, 3.0) } else { line };
+                ax.line(&wall, &err, line)?;
+                ax.scatter(&wall, &err, Style::points(color).marker(marker).size(9.0))?;
+            }
         }
         ax.hline(
             20.0,
