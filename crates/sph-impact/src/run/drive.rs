@@ -170,6 +170,15 @@ impl Job<'_> {
                 resumed_from: c.resumed_from_s,
             };
             before.resumed_from.push(c.solver.state.time);
+            progress = progress.starting_at(c.solver.state.time, c.steps);
+            if !self.options.quiet {
+                eprintln!(
+                    "resuming at t = {:e} s (step {}) from {}",
+                    c.solver.state.time,
+                    c.steps,
+                    dir.join(CHECKPOINT_FILE).display()
+                );
+            }
             sim.restore(c.solver).map_err(|e| RunError::Resume {
                 path: dir.join(CHECKPOINT_FILE).display().to_string(),
                 reason: e.to_string(),

@@ -14,6 +14,10 @@ pub(crate) struct Progress {
     last: Option<Instant>,
     end_time: f64,
     particles: usize,
+    /// Simulated time and steps when this process started (not 0 for a resumed run):
+    /// the rate and the time left count only this process' work.
+    t0: f64,
+    steps0: u64,
 }
 
 impl Progress {
@@ -25,7 +29,14 @@ impl Progress {
             last: None,
             end_time,
             particles,
+            t0: 0.0,
+            steps0: 0,
         }
+    }
+
+    /// The same, for a run resumed at simulated time `t0` after `steps0` steps.
+    pub fn starting_at(self, t0: f64, steps0: u64) -> Self {
+        Self { t0, steps0, ..self }
     }
 
     /// Reports the state after `steps` steps at simulated time `t` (s).
@@ -44,10 +55,12 @@ impl Progress {
         }
         self.last = Some(now);
         let wall = (now - self.start).as_secs_f64().max(1e-9);
-        let rate = steps as f64 * self.particles as f64 / wall;
+        let rate = steps.saturating_sub(self.steps0) as f64 * self.particles as f64 / wall;
         let done = (t / self.end_time).clamp(0.0, 1.0);
-        let eta = if done > 0.0 {
-            estimate_human_seconds(wall * (1.0 - done) / done)
+        // The fraction of this process' stretch, [t0, end], done so far.
+        let here = ((t - self.t0) / (self.end_time - self.t0)).clamp(0.0, 1.0);
+        let eta = if here > 0.0 {
+            estimate_human_seconds(wall * (1.0 - here) / here)
         } else {
             "?".into()
         };
