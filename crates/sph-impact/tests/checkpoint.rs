@@ -6,7 +6,7 @@
 //! `cargo test -p sph-impact --test checkpoint -- --nocapture` prints the refusals.
 
 use sph_impact::run::{CHECKPOINT_FILE, RunError, RunOptions, RunSummary, run};
-use sph_impact::scene::Scene;
+use sph_impact::scene::{Scene, SceneSimulation};
 use std::path::{Path, PathBuf};
 
 fn scene_file(name: &str) -> PathBuf {
@@ -179,4 +179,38 @@ fn a_checkpoint_that_does_not_fit_is_refused() {
     // Not a checkpoint at all.
     std::fs::write(dir.join(CHECKPOINT_FILE), b"not cbor").unwrap();
     assert!(refused(&scene, &dir, &resume).contains("not a checkpoint"));
+    // A fresh run without --checkpoint removes a checkpoint an earlier run left.
+    run(&scene, &dir, &options(2, Some(0.5e-6), false, false)).unwrap();
+    assert!(!dir.join(CHECKPOINT_FILE).exists());
+}
+
+/// The solver refuses the state of another set-up and keeps its own.
+#[test]
+fn a_solver_checkpoint_of_another_set_up_is_refused_and_changes_nothing() {
+    let scene = rz_scene();
+    let rz = |scale: f64| match scene.build_scaled(scale).unwrap().simulation {
+        SceneSimulation::Rz(sim) => sim,
+        SceneSimulation::ThreeD(_) => panic!("the scene is RZ"),
+    };
+    let mut sim = rz(1.0);
+    sim.step(1e-9).unwrap();
+    let position = sim.state.particles.position.clone();
+    let coarser = rz(0.5).checkpoint();
+    let e = sim.restore(coarser).unwrap_err().to_string();
+    println!("{e}");
+    assert!(e.contains("particles"), "{e}");
+    assert_eq!(sim.state.particles.position, position);
+    let mut heavier = sim.checkpoint();
+    heavier.state.particles.mass[7] *= 2.0;
+    let e = sim.restore(heavier).unwrap_err().to_string();
+    println!("{e}");
+    assert!(e.contains("mass"), "{e}");
+    let mut twice = sim.checkpoint();
+    twice.state.particles.id[1] = twice.state.particles.id[0];
+    let e = sim.restore(twice).unwrap_err().to_string();
+    println!("{e}");
+    assert!(e.contains("twice"), "{e}");
+    let own = sim.checkpoint();
+    sim.restore(own).unwrap();
+    assert_eq!(sim.state.particles.position, position);
 }

@@ -150,41 +150,62 @@ impl Job<'_> {
         // The work of the run's earlier parts, when it resumes from a checkpoint.
         let mut before = Before::default();
         let (mut history, mut next_snapshot) = if self.options.resume {
-            let c = RunCheckpoint::<D>::read(dir, scene, self.options, end_time)?;
-            let history = History::resume(&history_path, c.history_rows)?;
-            for (t, file) in &c.pvd {
-                outputs.pvd.push(*t, file.clone());
+            let RunCheckpoint {
+                next_snapshot,
+                snapshot_index,
+                pvd,
+                crater: [depth, diameter, axis_depth],
+                steps,
+                particle_steps,
+                stepping_s,
+                wall_s,
+                history_rows,
+                mut resumed_from_s,
+                solver,
+                ..
+            } = RunCheckpoint::<D>::read(dir, scene, self.options, end_time)?;
+            let t_checkpoint = solver.state.time;
+            // The solver's state first: a checkpoint that does not fit leaves the
+            // directory as it was (the history is cut only once it does).
+            sim.restore(solver).map_err(|e| RunError::Resume {
+                path: dir.join(CHECKPOINT_FILE).display().to_string(),
+                reason: e.to_string(),
+            })?;
+            let history = History::resume(&history_path, history_rows)?;
+            for (t, file) in pvd {
+                outputs.pvd.push(t, file);
             }
-            outputs.index = c.snapshot_index;
-            let [depth, diameter, axis_depth] = c.crater;
+            outputs.index = snapshot_index;
             outputs.crater = CraterReading {
                 depth,
                 diameter,
                 axis_depth,
             };
+            resumed_from_s.push(t_checkpoint);
             before = Before {
-                steps: c.steps,
-                particle_steps: c.particle_steps,
-                stepping: c.stepping_s,
-                wall: c.wall_s,
-                resumed_from: c.resumed_from_s,
+                steps,
+                particle_steps,
+                stepping: stepping_s,
+                wall: wall_s,
+                resumed_from: resumed_from_s,
             };
-            before.resumed_from.push(c.solver.state.time);
-            progress = progress.starting_at(c.solver.state.time, c.steps);
+            progress = progress.starting_at(t_checkpoint, steps);
             if !self.options.quiet {
                 eprintln!(
-                    "resuming at t = {:e} s (step {}) from {}",
-                    c.solver.state.time,
-                    c.steps,
+                    "resuming at t = {t_checkpoint:e} s (step {steps}) from {}",
                     dir.join(CHECKPOINT_FILE).display()
                 );
             }
-            sim.restore(c.solver).map_err(|e| RunError::Resume {
-                path: dir.join(CHECKPOINT_FILE).display().to_string(),
-                reason: e.to_string(),
-            })?;
-            (history, c.next_snapshot)
+            (history, next_snapshot)
         } else {
+            // A checkpoint left by an earlier run in this directory is not this run's.
+            let stale = dir.join(CHECKPOINT_FILE);
+            match std::fs::remove_file(&stale) {
+                Err(e) if e.kind() != std::io::ErrorKind::NotFound => {
+                    return Err(RunError::io(&stale, e));
+                }
+                _ => {}
+            }
             let mut history = History::create(&history_path)?;
             outputs.take(&sim, copies, dir, &measurer, &mut history, None)?;
             (history, interval.min(end_time))
