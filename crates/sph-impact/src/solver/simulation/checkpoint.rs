@@ -109,12 +109,34 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
 
     fn check_checkpoint(&self, c: &SolverCheckpoint<D>) -> Result<(), SolverError> {
         let bad = |reason: String| SolverError::BadCheckpoint(reason);
-        for (what, s) in [("state", &c.state), ("free flight", &c.flight_state)] {
+        // A per-particle field holds one entry per particle where this set-up evolves it
+        // and none where it does not (an empty state, no particle in flight, holds none).
+        let fits = |what: &str, field: &str, len: usize, n: usize, used: bool| {
+            let expected = if used { n } else { 0 };
+            if len == expected || (n == 0 && len == 0) {
+                Ok(())
+            } else {
+                Err(bad(format!(
+                    "{what}: `{field}` has {len} entries for {n} particles, this set-up \
+                     expects {expected}"
+                )))
+            }
+        };
+        let own = &self.state;
+        let rz = self.scheme.geometry == Geometry::Axisymmetric;
+        for (what, s, held, radius0) in [
+            ("state", &c.state, &c.held, &c.radius0),
+            (
+                "free flight",
+                &c.flight_state,
+                &c.flight_held,
+                &c.flight_radius0,
+            ),
+        ] {
             s.particles
                 .validate()
                 .map_err(|e| bad(format!("{what}: {e}")))?;
             let n = s.particles.len();
-            let own = &self.state;
             for (field, len, used) in [
                 ("h_tensor", s.h_tensor.len(), !own.h_tensor.is_empty()),
                 ("spacing0", s.spacing0.len(), true),
@@ -149,42 +171,14 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
                     s.damage_index.len(),
                     !own.damage_index.is_empty(),
                 ),
+                // Held flags may be empty when none is held, in flight as in the state.
+                ("held", held.len(), !held.is_empty()),
+                ("radius0", radius0.len(), rz),
             ] {
-                // A field this set-up does not evolve is empty; an empty state (no
-                // particle in flight) may leave every field empty.
-                let expected = if used { n } else { 0 };
-                if len != expected && !(n == 0 && len == 0) {
-                    return Err(bad(format!(
-                        "{what}: `{field}` has {len} entries, this set-up expects {expected}"
-                    )));
-                }
-            }
-        }
-        let rz = self.scheme.geometry == Geometry::Axisymmetric;
-        let lengths = [
-            (
-                "held",
-                c.held.len(),
-                c.state.particles.len(),
-                !self.held.is_empty(),
-            ),
-            ("radius0", c.radius0.len(), c.state.particles.len(), rz),
-            (
-                "free-flight radius0",
-                c.flight_radius0.len(),
-                c.flight_state.particles.len(),
-                rz,
-            ),
-        ];
-        for (field, len, n, used) in lengths {
-            if len != if used { n } else { 0 } {
-                return Err(bad(format!(
-                    "`{field}` has {len} entries for {n} particles"
-                )));
+                fits(what, field, len, n, used)?;
             }
         }
         // The same particles: each id once, with this set-up's mass, material and flaws.
-        let own = &self.state;
         let mut by_id: std::collections::HashMap<u64, usize> = own
             .particles
             .id
