@@ -17,7 +17,14 @@
 # gives each particle the mass of its four mirror copies, all four equidistant from the
 # axis. So one formula serves RZ, the quarter and a full 3-D body.
 #
-# Usage: python3 crater_axis_depth.py TARGET_MATERIAL_ID H_M INITIAL.vtu SNAPSHOT.vtu...
+# LEVEL (default 0.5, the code's own) replaces the half level, for checking how much the
+# depth depends on where the field is cut (docs/verification.md, "the axis jet").
+#
+# --profile TOP_M BOTTOM_M prints phi(z, t) / phi(z', 0) every 0.125 mm from TOP down to
+# BOTTOM for each snapshot instead (the profiles in docs/verification.md).
+#
+# Usage: python3 crater_axis_depth.py [--level LEVEL] [--profile TOP_M BOTTOM_M]
+#            TARGET_MATERIAL_ID H_M INITIAL.vtu SNAPSHOT.vtu...
 import sys, math, os
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from vtu_read import read
@@ -48,9 +55,9 @@ def axis_fraction(parts, z, H):
                if abs(z - zj) < H)
 
 
-def axis_floor(parts, initial, H, top=0.005, bottom=-0.06, dz=1e-4):
+def axis_floor(parts, initial, H, top=0.005, bottom=-0.06, dz=1e-4, level=0.5):
     def filled(z):
-        return axis_fraction(parts, z, H) >= 0.5 * axis_fraction(initial, min(z, -H), H)
+        return axis_fraction(parts, z, H) >= level * axis_fraction(initial, min(z, -H), H)
     z = top
     while z > bottom:
         if filled(z):
@@ -67,10 +74,26 @@ def axis_floor(parts, initial, H, top=0.005, bottom=-0.06, dz=1e-4):
 
 
 def main():
-    target, H, first, files = int(sys.argv[1]), float(sys.argv[2]), sys.argv[3], sys.argv[4:]
+    args, level, profile = sys.argv[1:], 0.5, None
+    while args[:1] in (["--level"], ["--profile"]):
+        if args[0] == "--level":
+            level, args = float(args[1]), args[2:]
+        else:
+            profile, args = (float(args[1]), float(args[2])), args[3:]
+    target, H, first, files = int(args[0]), float(args[1]), args[2], args[3:]
     initial = wall_particles(first, target, H)
+    if profile:
+        snaps = [wall_particles(f, target, H) for f in files]
+        print("z_mm " + " ".join(os.path.basename(f) for f in files))
+        z = profile[0]
+        while z >= profile[1] - 1e-12:
+            ref = axis_fraction(initial, min(z, -H), H)
+            print("%7.3f " % (z * 1e3)
+                  + " ".join("%5.2f" % (axis_fraction(p, z, H) / ref) for p in snaps))
+            z -= 0.125e-3
+        return
     for f in files:
-        floor = axis_floor(wall_particles(f, target, H), initial, H)
+        floor = axis_floor(wall_particles(f, target, H), initial, H, level=level)
         print("%s: axis depth %.3f mm" % (f, -floor * 1e3))
 
 

@@ -260,6 +260,12 @@ fn other_bad_values() {
         m.starts_with("scene.toml:21:26: `solver.fragment_density_ratio`:"),
         "{m}"
     );
+    // The artificial stress' cap on ε fⁿ: positive and finite, or absent.
+    let m = message(&format!(
+        "{BASE}[solver]\nartificial_stress = {{ epsilon = 0.2, cap = 0.0 }}\n"
+    ));
+    assert!(m.contains("artificial_stress.cap"), "{m}");
+    assert!(m.contains("must be finite and > 0"), "{m}");
     let m = message(&format!("{BASE}spall_damage = 0.0\n"));
     assert!(m.contains("`diagnostics.spall_damage`"), "{m}");
     assert!(m.contains("must be in (0, 1]"), "{m}");

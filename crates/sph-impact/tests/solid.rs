@@ -366,6 +366,7 @@ fn block(
             epsilon: 0.3,
             exponent: 4,
             form: ArtificialStressForm::Principal,
+            cap: None,
         },
         ..Default::default()
     };

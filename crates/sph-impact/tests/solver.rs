@@ -640,6 +640,70 @@ fn rz_uniform_tension_with_artificial_stress_is_in_equilibrium() {
     assert!((beyond - beyond0).abs() < 1e-9, "{beyond} vs {beyond0}");
 }
 
+/// The artificial stress' cap (docs/verification.md, "The axis jet"): in a uniform
+/// tension, a pair pushed to 0.45 Δp apart is driven apart by the study's unbounded form
+/// (ε fⁿ = 5.7 times the tension's pull between them, support 2.5 Δp), and with `cap = 1`
+/// the pair term can at most cancel that pull. Plane 2-D block, P = −0.01 K; the pair's
+/// separating acceleration after one tiny step, against the same block without the
+/// artificial stress. Measured: −0.112 (ε = 0), +0.912 (the study's), +0.056 (cap 1).
+#[test]
+fn capped_artificial_stress_does_not_drive_a_close_pair_apart() {
+    let elastic = LinearElastic::new(LinearElasticParams { rho0: 1.0, K0: 1.0 }).unwrap();
+    let (n, dx) = (16, 1.0 / 16.0);
+    // The pair: particle `a` at the centre, `b` moved down from the row above to 0.45 dx.
+    let (ia, ib) = (8 * n + 8, 8 * n + 9);
+    let separating = |astress: sph_riemann::ArtificialStress| {
+        let mut p = Particles::<Dim2>::new();
+        for a in 0..n {
+            for b in 0..n {
+                let mut x = DVec2::new((a as f64 + 0.5) * dx, (b as f64 + 0.5) * dx);
+                if a * n + b == ib {
+                    x.y -= 0.55 * dx;
+                }
+                p.push(ParticleInit {
+                    position: x,
+                    velocity: DVec2::ZERO,
+                    mass: 0.99 * dx * dx,
+                    density: 0.99,
+                    specific_energy: 1.0,
+                    smoothing_length: 2.5 * dx,
+                    material: 0,
+                });
+            }
+        }
+        let scheme = SchemeConfig {
+            artificial_stress: astress,
+            ..Default::default()
+        };
+        let material = Material::fluid("elastic", elastic);
+        let mut sim =
+            Simulation::new(p, vec![material], scheme, WendlandC2, Vec::new(), None).unwrap();
+        let dt = sim.step(1e-6).unwrap().dt;
+        let s = &sim.state.particles;
+        let k = |id: usize| s.id.iter().position(|&i| i == id as u64).unwrap();
+        // Relative acceleration of b away from a, along the pair (+y).
+        (s.velocity[k(ib)].y - s.velocity[k(ia)].y) / dt
+    };
+    let study = sph_riemann::ArtificialStress::default();
+    let off = separating(sph_riemann::ArtificialStress {
+        epsilon: 0.0,
+        ..study
+    });
+    let unbounded = separating(study);
+    let capped = separating(sph_riemann::ArtificialStress {
+        cap: Some(1.0),
+        ..study
+    });
+    println!("separating acceleration: eps 0 {off:e}, study {unbounded:e}, cap 1 {capped:e}");
+    // Without the artificial stress the tension pulls the pair together (the tensile
+    // instability); the study's form turns that into a push many times as strong; the cap
+    // leaves at most the push that cancels the pull, so much less than the study's.
+    assert!(off < 0.0, "{off}");
+    assert!(unbounded > 5.0 * off.abs(), "{unbounded} vs {off}");
+    assert!(capped < 0.25 * unbounded, "{capped} vs {unbounded}");
+    assert!(capped > off, "{capped} vs {off}");
+}
+
 /// Free flight: particles above the plane moving up leave the hydrodynamics after the
 /// step, fly on at constant velocity, and stay in every total; the rest conserve
 /// momentum and energy as before (a dropped pair drops both its forces).

@@ -40,6 +40,14 @@ pub struct ArtificialStress {
     /// Scalar (pressure) or tensor (principal-stress) form.
     #[serde(default)]
     pub form: ArtificialStressForm,
+    /// Upper bound on ε fⁿ, the pair's artificial stress over the tension it answers
+    /// (`None`, the study's form: unbounded). With ε fⁿ > 1 a pair in tension is pushed
+    /// apart, and pushing it apart deepens its tension: a pair compressed to well under
+    /// Δp that then goes into tension runs away (fⁿ ≈ 58 at 0.45 Δp with the Wendland C2
+    /// kernel of support 2.2 Δp). A cap of 1 lets the term cancel a close pair's tensile pull but never
+    /// reverse it (docs/verification.md, "the axis jet").
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub cap: Option<f64>,
 }
 
 impl Default for ArtificialStress {
@@ -48,6 +56,7 @@ impl Default for ArtificialStress {
             epsilon: 0.2,
             exponent: 4,
             form: ArtificialStressForm::Pressure,
+            cap: None,
         }
     }
 }
@@ -70,7 +79,17 @@ impl ArtificialStress {
         if s == 0.0 {
             0.0
         } else {
-            w_ratio.powi(self.exponent) * s
+            self.kernel_factor(w_ratio) * s
+        }
+    }
+
+    /// fⁿ for the kernel ratio f = W(r_ij)/W(Δp), bounded by `cap`/ε when a cap is set.
+    #[inline]
+    pub fn kernel_factor(&self, w_ratio: f64) -> f64 {
+        let f_n = w_ratio.powi(self.exponent);
+        match self.cap {
+            Some(cap) if self.epsilon > 0.0 => f_n.min(cap / self.epsilon),
+            _ => f_n,
         }
     }
 

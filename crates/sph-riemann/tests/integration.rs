@@ -245,6 +245,7 @@ fn artificial_stress_hand_computed() {
         epsilon: 0.2,
         exponent: 4,
         form: ArtificialStressForm::Pressure,
+        cap: None,
     };
     // P = −1 MPa, ρ = 1000: R = 0.2·1e6/1e6 = 0.2; compression gives 0.
     assert_relative_eq!(a.r(-1.0e6, 1000.0), 0.2, max_relative = 1e-15);
@@ -287,6 +288,40 @@ fn artificial_stress_hand_computed() {
         }
         .is_off()
     );
+}
+
+#[test]
+fn the_cap_bounds_epsilon_f_n_and_nothing_else() {
+    let study = ArtificialStress::default();
+    let capped = ArtificialStress {
+        cap: Some(1.0),
+        ..study
+    };
+    // Below the cap both give fⁿ: f = 1.2, ε f⁴ = 0.41472.
+    assert_relative_eq!(
+        capped.kernel_factor(1.2),
+        1.2f64.powi(4),
+        max_relative = 1e-15
+    );
+    assert_eq!(capped.kernel_factor(1.2), study.kernel_factor(1.2));
+    // A pair at 0.45 Δp with the Wendland C2 kernel (support 2.2 Δp): f ≈ 2.76, f⁴ ≈ 58,
+    // ε f⁴ ≈ 11.6 unbounded; capped at ε f⁴ = 1, fⁿ = 1/ε = 5.
+    let w = |q: f64| (1.0 - q).powi(4) * (1.0 + 4.0 * q);
+    let f = w(0.45 / 2.2) / w(1.0 / 2.2);
+    assert!(0.2 * study.kernel_factor(f) > 10.0, "{f}");
+    assert_relative_eq!(capped.kernel_factor(f), 5.0, max_relative = 1e-15);
+    assert_relative_eq!(capped.f(0.3, 0.1, f), 5.0 * 0.4, max_relative = 1e-15);
+    // The bound sits exactly where ε fⁿ reaches the cap: f = 5^(1/4).
+    let edge = 5f64.powf(0.25);
+    assert_relative_eq!(capped.kernel_factor(edge * 0.999), (edge * 0.999).powi(4));
+    assert_relative_eq!(capped.kernel_factor(edge * 1.001), 5.0);
+    // With ε = 0 the term is off whatever the cap.
+    let off = ArtificialStress {
+        epsilon: 0.0,
+        ..capped
+    };
+    assert!(off.is_off());
+    assert_eq!(off.f(0.0, 0.0, f), 0.0);
 }
 
 #[test]

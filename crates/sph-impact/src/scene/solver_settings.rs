@@ -35,7 +35,7 @@ pub struct ViscositySettings {
     pub switch: Option<sph_riemann::ViscositySwitch>,
 }
 
-/// `[solver] artificial_stress = { epsilon = …, n = …, form = "pressure" | "principal" }`.
+/// `[solver] artificial_stress = { epsilon = …, n = …, form = "pressure" | "principal", cap = … }`.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct ArtificialStressSettings {
@@ -48,6 +48,9 @@ pub struct ArtificialStressSettings {
     /// Scalar (pressure) or tensor (principal-stress) form.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub form: Option<ArtificialStressForm>,
+    /// Upper bound on ε fⁿ (none by default, the study's form).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub cap: Option<f64>,
 }
 
 /// The `[solver]` table: each key overrides one [`SchemeConfig`] field of
@@ -173,6 +176,7 @@ impl SolverSettings {
             s.artificial_stress.epsilon = a.epsilon.unwrap_or(s.artificial_stress.epsilon);
             s.artificial_stress.exponent = a.n.unwrap_or(s.artificial_stress.exponent);
             s.artificial_stress.form = a.form.unwrap_or(s.artificial_stress.form);
+            s.artificial_stress.cap = a.cap.or(s.artificial_stress.cap);
         }
         s
     }

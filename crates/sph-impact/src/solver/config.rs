@@ -308,6 +308,11 @@ impl SchemeConfig {
                 "must be ≥ 0",
             );
         }
+        if let Some(cap) = self.artificial_stress.cap
+            && !(cap > 0.0 && cap.is_finite())
+        {
+            return bad("artificial_stress.cap", cap, "must be finite and > 0");
+        }
         if let SmoothingMode::Asph { max_aspect } = self.smoothing
             && !(max_aspect >= 1.0)
         {

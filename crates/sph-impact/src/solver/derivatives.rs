@@ -438,7 +438,7 @@ pub(crate) fn rates<D: Dimension, P: PairKernel<D>>(
                 let r_sum = ext.astress[i] * (1.0 / ri) + ext.astress[j] * (1.0 / rj);
                 if r_sum.double_dot(&r_sum) > 0.0 || r_tt != 0.0 {
                     let dp = 0.5 * (ext.spacing0[i] + ext.spacing0[j]);
-                    let f = (pk.w(i, j, r) / pk.w_at(i, j, r_hat, dp)).powi(astress.exponent);
+                    let f = astress.kernel_factor(pk.w(i, j, r) / pk.w_at(i, j, r_hat, dp));
                     (r_sum.mul_vec(g) * (mj * f), f)
                 } else {
                     (D::Vector::ZERO, 0.0)

@@ -210,6 +210,7 @@ impl Problem {
                 epsilon: 0.2,
                 exponent: 4,
                 form: sph_riemann::ArtificialStressForm::Principal,
+                cap: None,
             };
         }
         if matches!(

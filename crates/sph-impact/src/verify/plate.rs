@@ -199,6 +199,7 @@ pub(crate) fn run(n: usize, scheme: SchemeConfig) -> Result<Outcome, SolverError
             epsilon: 0.3,
             exponent: 4,
             form: ArtificialStressForm::Principal,
+            cap: None,
         }
     } else {
         scheme.artificial_stress

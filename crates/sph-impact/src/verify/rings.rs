@@ -141,6 +141,7 @@ pub(crate) fn run(n: usize, scheme: SchemeConfig) -> Result<Outcome, SolverError
         epsilon: 0.3,
         exponent: 4,
         form: ArtificialStressForm::Principal,
+        cap: None,
     };
     let mut s_with = scheme.clone();
     s_with.artificial_stress = with;
