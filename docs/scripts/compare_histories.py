@@ -41,7 +41,8 @@ def main(argv):
         if t == 0.0:
             continue
         ba, bb = float(ra["beta"]), float(rb["beta"])
-        da, db = float(ra["crater_axis_depth_m"]), float(rb["crater_axis_depth_m"])
+        # Histories written before session 25 have no axis depth: shown as nan.
+        da, db = (float(r.get("crater_axis_depth_m", "nan")) for r in (ra, rb))
         dbeta = bb / ba - 1.0
         ddepth = db / da - 1.0 if da != 0.0 else float("nan")
         print(
@@ -50,7 +51,7 @@ def main(argv):
         )
         if t >= t_from - 1e-12:
             for name, d in (("beta", dbeta), ("depth", ddepth)):
-                if abs(d) > abs(worst[name][0]) or d != d:
+                if abs(d) > abs(worst[name][0]):
                     worst[name] = (d, t)
     for name, (d, t) in worst.items():
         if t is not None:
