@@ -37,7 +37,8 @@ def w3(q, h):
     return 21.0 / (2.0 * math.pi) / h ** 3 * u ** 4 * (1.0 + 4.0 * q)
 
 
-def wall_particles(path, target, H):
+def wall_particles(path, target, reach):
+    """(s^2, z, V) of the target's wall particles within `reach` of the axis."""
     d = read(path)
     parts = []
     for p, v, m, rho, mat in zip(d["Points"], d["velocity"], d["mass"], d["density"],
@@ -45,7 +46,7 @@ def wall_particles(path, target, H):
         if mat != target or (p[2] > 0.0 and v[2] > 0.0):
             continue
         s2 = p[0] ** 2 + p[1] ** 2
-        if s2 < H * H:
+        if s2 < reach * reach:
             parts.append((s2, p[2], m / rho))
     return parts
 
@@ -55,22 +56,25 @@ def axis_fraction(parts, z, H):
                if abs(z - zj) < H)
 
 
-def axis_floor(parts, initial, H, top=0.005, bottom=-0.06, dz=1e-4, level=0.5):
-    def filled(z):
-        return axis_fraction(parts, z, H) >= level * axis_fraction(initial, min(z, -H), H)
+def highest_filled(filled, top, bottom, dz, iterations):
+    """The highest z in [bottom, top] where filled(z) holds: scanned down in steps of dz,
+    then bisected `iterations` times; nan when it never holds."""
     z = top
     while z > bottom:
         if filled(z):
             lo, hi = z, z + dz
-            for _ in range(30):
+            for _ in range(iterations):
                 mid = 0.5 * (lo + hi)
-                if filled(mid):
-                    lo = mid
-                else:
-                    hi = mid
+                lo, hi = (mid, hi) if filled(mid) else (lo, mid)
             return 0.5 * (lo + hi)
         z -= dz
     return float("nan")
+
+
+def axis_floor(parts, initial, H, top=0.005, bottom=-0.06, dz=1e-4, level=0.5):
+    def filled(z):
+        return axis_fraction(parts, z, H) >= level * axis_fraction(initial, min(z, -H), H)
+    return highest_filled(filled, top, bottom, dz, 30)
 
 
 def main():

@@ -8,22 +8,22 @@
 # is the same for an RZ ring and for a 3-D particle (or a quarter model's, with its
 # mirror copies' mass) at the same distance s from the axis, so one formula serves both.
 # Floor = highest z where phi_D(z, t) >= LEVEL * phi_D(min(z, -H), 0); depth = -floor
-# (surface at z = 0); wall particles as in crater_axis_depth.py (not ejecta).
+# (surface at z = 0); wall particles as in crater_axis_depth.py (not ejecta) of the
+# target, material 1 as in the study's scenes.
 #
 # Usage: python3 disc_axis_depth.py H_M R_M LEVEL INITIAL.vtu SNAPSHOT.vtu...
-import sys, math
-import os
+import sys, math, os
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from vtu_read import read
-from crater_axis_depth import w3
+from crater_axis_depth import w3, wall_particles, highest_filled
 NT, NR = 24, 4
+TARGET = 1  # material id of the target in the study's scenes
+
+
 def parts(path, H, R):
-    d = read(path); out = []
-    for p, v, m, rho, mat in zip(d["Points"], d["velocity"], d["mass"], d["density"], d["material"]):
-        if mat != 1 or (p[2] > 0.0 and v[2] > 0.0): continue
-        s = math.hypot(p[0], p[1])
-        if s < R + H: out.append((s, p[2], m / rho))
-    out.sort(key=lambda x: x[1]); return out
+    """(s, z, V) of the wall particles whose kernel reaches the disc r < R."""
+    return [(math.sqrt(s2), zj, V) for s2, zj, V in wall_particles(path, TARGET, R + H)]
+
+
 def field(ps, z, H, R):
     # Disc quadrature: NR radii at the midpoints of equal-area annuli, equal weights.
     tot = 0.0
@@ -31,7 +31,8 @@ def field(ps, z, H, R):
         rho_k = R * math.sqrt((k + 0.5) / NR)
         for s, zj, V in ps:
             dz = z - zj
-            if abs(dz) >= H or abs(s - rho_k) >= H: continue
+            if abs(dz) >= H or abs(s - rho_k) >= H:
+                continue
             acc = 0.0
             for t in range(NT):
                 c = math.cos(math.pi * (t + 0.5) / NT)
@@ -39,20 +40,17 @@ def field(ps, z, H, R):
                 acc += w3(r / H, H)
             tot += V * acc / NT
     return tot / NR
-def floor(ps, ini, H, R, level, top=0.0, bottom=-0.03, dz=2.5e-4):
-    f = lambda z: field(ps, z, H, R) >= level * field(ini, min(z, -H), H, R)
-    z = top
-    while z > bottom:
-        if f(z):
-            lo, hi = z, z + dz
-            for _ in range(12):
-                mid = 0.5 * (lo + hi)
-                lo, hi = (mid, hi) if f(mid) else (lo, mid)
-            return 0.5 * (lo + hi)
-        z -= dz
-    return float('nan')
+
+
+def floor(ps, ini, H, R, level):
+    def filled(z):
+        return field(ps, z, H, R) >= level * field(ini, min(z, -H), H, R)
+    return highest_filled(filled, 0.0, -0.03, 2.5e-4, 12)
+
+
 if __name__ == "__main__":
     H, R, level = float(sys.argv[1]), float(sys.argv[2]), float(sys.argv[3])
     ini = parts(sys.argv[4], H, R)
     for f in sys.argv[5:]:
-        print("%s %.3f" % (f.split('/')[-1], -1e3 * floor(parts(f, H, R), ini, H, R, level)), flush=True)
+        print("%s %.3f" % (os.path.basename(f), -1e3 * floor(parts(f, H, R), ini, H, R, level)),
+              flush=True)
