@@ -107,7 +107,8 @@ fn print_comparison(s: &RunSummary, e: &sph_examples::Experiment) {
             mm(e.study.1),
         ),
         (
-            // docs/diagnostics.md §4.4: the volume fraction on the axis, not one bin.
+            // docs/diagnostics.md §4.4: the volume fraction averaged over a disc about
+            // the axis, not one bin.
             "  on the axis",
             mm(s.crater_axis_depth_m),
             mm(e.depth),

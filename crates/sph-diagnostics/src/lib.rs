@@ -40,6 +40,7 @@ pub mod crater;
 pub mod crater_options;
 pub mod crater_profile;
 pub mod damage_stats;
+pub mod disc_kernel;
 pub mod ejecta;
 pub mod ejecta_distribution;
 pub mod error;
@@ -62,6 +63,7 @@ pub use crater::{Crater, crater, measure_crater};
 pub use crater_options::{CraterOptions, DensityCut};
 pub use crater_profile::{CraterProfile, crater_profile};
 pub use damage_stats::{BodyDamage, FULLY_DAMAGED, damage_stats};
+pub use disc_kernel::DiscKernel;
 pub use ejecta::{Ejecta, EjectaCriterion, ejecta};
 pub use ejecta_distribution::{
     EjectaBin, EjectaCumulative, ejecta_cumulative, ejecta_distribution,

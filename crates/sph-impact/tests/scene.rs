@@ -275,6 +275,9 @@ fn other_bad_values() {
     let m = message(&format!("{BASE}axis_kernel_width = -1.0e-3\n"));
     assert!(m.contains("`diagnostics.axis_kernel_width`"), "{m}");
     assert!(m.contains("must be positive (m)"), "{m}");
+    let m = message(&format!("{BASE}axis_disc_radius = -1.0e-3\n"));
+    assert!(m.contains("`diagnostics.axis_disc_radius`"), "{m}");
+    assert!(m.contains("must be ≥ 0 (m"), "{m}");
     let m = message(&edit("name = \"target\"", "name = \"projectile\""));
     assert!(m.contains("used twice"), "{m}");
 }

@@ -319,7 +319,8 @@ impl Job<'_> {
 struct CraterReading {
     depth: f64,
     diameter: f64,
-    /// From the volume fraction on the axis (`Measurer::axis_depth`).
+    /// From the volume fraction averaged over a disc about the axis
+    /// (`Measurer::axis_depth`).
     axis_depth: f64,
 }
 

@@ -110,6 +110,7 @@ pub(crate) fn summarise<D: SceneDimension>(
         crater_depth_m: active(c.depth),
         crater_axis_depth_m: axis_depth,
         crater_axis_kernel_width_m: active(setup.axis_kernel_width),
+        crater_axis_disc_radius_m: active(setup.axis_disc_radius),
         rim_height_m: active(c.rim_height),
         beta: f64::NAN,
         beta_target: f64::NAN,

@@ -5,7 +5,7 @@ use crate::run::arrays::Arrays;
 use crate::scene::{DiagnosticSetup, GeometryKind};
 use serde::Serialize;
 use sph_diagnostics::{
-    AxisDepth, AxisField, Crater, CraterOptions, DensityCut, EjectaCriterion, Geometry,
+    AxisDepth, AxisField, Crater, CraterOptions, DensityCut, DiscKernel, EjectaCriterion, Geometry,
     ProjectileDebris, beta_from_ejecta, beta_from_target, crater, ejecta,
 };
 
@@ -108,13 +108,13 @@ impl Measurer {
         }
     }
 
-    /// The target's volume-fraction field on the axis now.
+    /// The target's volume-fraction field about the axis now (averaged over the disc).
     fn axis_field(&self, a: &Arrays) -> Result<AxisField, sph_diagnostics::ImpactError> {
         AxisField::new(
             &a.view(),
             &self.criterion(),
             self.diagnostic_geometry(),
-            self.setup.axis_kernel_width,
+            DiscKernel::new(self.setup.axis_kernel_width, self.setup.axis_disc_radius)?,
         )
     }
 
@@ -185,6 +185,7 @@ mod tests {
                 spall_damage: None,
                 rubble_density,
                 axis_kernel_width: 2.5e-3,
+                axis_disc_radius: 2.5e-3,
             },
             projectile_mass: 1.0,
             initial_target_momentum_z: 0.0,
@@ -303,7 +304,8 @@ mod tests {
         // The untouched bed reads its own surface, within a tenth of its spacing.
         let d = m.axis_depth(&bed(0.0)).unwrap();
         assert!(d.abs() < 1e-4, "{d}");
-        // A target that does not reach the axis (a hollow cylinder with a 5 mm bore)
+        // A target that does not reach the disc's kernel (a hollow cylinder with a 5 mm
+        // bore, R + H = 5 mm)
         // calibrates, and its axis depth is NaN rather than a failed run.
         let mut hollow = measurer(None);
         hollow.calibrate(&bed(5e-3)).unwrap();

@@ -93,6 +93,8 @@ pub struct RunSummary {
     pub crater_axis_depth_m: f64,
     /// Support radius of the kernel that reads that volume fraction (m).
     pub crater_axis_kernel_width_m: f64,
+    /// Radius of the disc about the axis it is averaged over (m; 0 the axis line).
+    pub crater_axis_disc_radius_m: f64,
     /// Highest rim above the surface (m).
     pub rim_height_m: f64,
     /// β = 1 + P_ej/P_imp.

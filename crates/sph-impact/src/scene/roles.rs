@@ -31,6 +31,9 @@ pub struct DiagnosticSetup {
     pub rubble_density: Option<f64>,
     /// Support radius of the axis depth's kernel (m).
     pub axis_kernel_width: f64,
+    /// Radius of the disc the axis depth's volume fraction is averaged over (m; 0 the
+    /// axis line).
+    pub axis_disc_radius: f64,
 }
 
 impl DiagnosticSetup {
@@ -143,6 +146,16 @@ impl Scene {
             d.axis_kernel_width,
             self.solver.scheme().n_target * finest_target,
         )?;
+        // By default as wide as the kernel: a pit two spacings wide is read, one column
+        // of particles is not (docs/diagnostics.md §4.4).
+        let axis_disc_radius = d.axis_disc_radius.unwrap_or(axis_kernel_width);
+        if !(axis_disc_radius >= 0.0 && axis_disc_radius.is_finite()) {
+            return Err(invalid(
+                "diagnostics.axis_disc_radius",
+                axis_disc_radius,
+                "must be ≥ 0 (m; 0 reads the axis line alone)",
+            ));
+        }
         let ejecta_tolerance = d.ejecta_tolerance.unwrap_or(0.0);
         if !(ejecta_tolerance >= 0.0 && ejecta_tolerance.is_finite()) {
             return Err(invalid(
@@ -192,6 +205,7 @@ impl Scene {
             spall_damage,
             rubble_density,
             axis_kernel_width,
+            axis_disc_radius,
         })
     }
 }

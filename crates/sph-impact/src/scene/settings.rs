@@ -86,4 +86,9 @@ pub struct DiagnosticsSettings {
     /// (docs/diagnostics.md §4.4).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub axis_kernel_width: Option<f64>,
+    /// Radius R (m) of the disc about the impact axis over which that volume fraction is
+    /// averaged; default the kernel's H, 0 reads the axis line alone
+    /// (docs/diagnostics.md §4.4).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub axis_disc_radius: Option<f64>,
 }
