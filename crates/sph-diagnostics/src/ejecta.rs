@@ -88,21 +88,31 @@ pub struct Ejecta {
     pub count: usize,
 }
 
+impl Ejecta {
+    /// The totals over the particles `members` of `view`.
+    pub(crate) fn of(view: &ParticleView, members: impl Iterator<Item = usize>) -> Self {
+        let mut e = Self::default();
+        for i in members {
+            let (m, v) = (view.mass[i], view.velocity[i]);
+            e.mass += m;
+            for a in 0..3 {
+                e.momentum[a] += m * v[a];
+            }
+            e.count += 1;
+        }
+        e.momentum_z = e.momentum[2];
+        e
+    }
+}
+
 /// Mass, momentum and count of the ejecta of `view` (validated first).
 pub fn ejecta(view: &ParticleView, criterion: &EjectaCriterion) -> Result<Ejecta, ImpactError> {
     view.validate()?;
     criterion.check()?;
-    let mut e = Ejecta::default();
-    for i in (0..view.len()).filter(|&i| criterion.is_ejecta(view, i)) {
-        let (m, v) = (view.mass[i], view.velocity[i]);
-        e.mass += m;
-        for a in 0..3 {
-            e.momentum[a] += m * v[a];
-        }
-        e.count += 1;
-    }
-    e.momentum_z = e.momentum[2];
-    Ok(e)
+    Ok(Ejecta::of(
+        view,
+        (0..view.len()).filter(|&i| criterion.is_ejecta(view, i)),
+    ))
 }
 
 #[cfg(test)]

@@ -40,6 +40,7 @@ pub mod crater;
 pub mod crater_options;
 pub mod crater_profile;
 pub mod damage_stats;
+pub mod detached;
 pub mod disc_kernel;
 pub mod ejecta;
 pub mod ejecta_distribution;
@@ -63,6 +64,7 @@ pub use crater::{Crater, crater, measure_crater};
 pub use crater_options::{CraterOptions, DensityCut};
 pub use crater_profile::{CraterProfile, crater_profile};
 pub use damage_stats::{BodyDamage, FULLY_DAMAGED, damage_stats};
+pub use detached::detached_ejecta;
 pub use disc_kernel::DiscKernel;
 pub use ejecta::{Ejecta, EjectaCriterion, ejecta};
 pub use ejecta_distribution::{

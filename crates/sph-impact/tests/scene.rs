@@ -506,6 +506,16 @@ fn smoke_scene_runs_end_to_end() {
     assert!(axis_depth.is_finite(), "{line:?}", line = last);
     assert_eq!(axis_depth, summary.crater_axis_depth_m);
     assert!(json["crater_axis_depth_m"].is_number(), "{json}");
+    // So is β from the detached ejecta, which cannot exceed β from all of them (it is
+    // the same sum over fewer particles, each with v_z > 0).
+    let beta_detached = last[17].parse::<f64>().unwrap();
+    assert_eq!(beta_detached, summary.beta_detached);
+    assert!(
+        (1.0..=summary.beta).contains(&beta_detached),
+        "{beta_detached} {}",
+        summary.beta
+    );
+    assert!(json["beta_detached"].is_number(), "{json}");
     let pvd = std::fs::read_to_string(dir.join("run.pvd")).unwrap();
     assert_eq!(pvd.matches("<DataSet").count(), 5);
     print_result("smoke", &summary);

@@ -16,6 +16,8 @@ pub(crate) struct Arrays {
     pub damage: Vec<f64>,
     pub density: Vec<f64>,
     pub specific_energy: Vec<f64>,
+    /// Support radius h (m; in RZ in the (r, z) plane).
+    pub support: Vec<f64>,
 }
 
 impl Arrays {
@@ -31,6 +33,7 @@ impl Arrays {
             damage: sim.damage(),
             density: p.density.clone(),
             specific_energy: p.specific_energy.clone(),
+            support: p.smoothing_length.clone(),
         }
     }
 

@@ -24,7 +24,7 @@ use std::path::Path;
 pub const CHECKPOINT_FILE: &str = "checkpoint.cbor";
 
 /// Bumped whenever the layout changes; a file of another format is refused.
-const FORMAT: u32 = 1;
+const FORMAT: u32 = 2;
 
 /// What is checked before the (large) solver state is read.
 #[derive(Deserialize)]
@@ -54,8 +54,9 @@ pub(crate) struct RunCheckpoint<D: SceneDimension> {
     pub snapshot_index: usize,
     /// The snapshots written so far (time, file).
     pub pvd: Vec<(f64, String)>,
-    /// The last crater reading: depth, diameter, axis depth (m).
-    pub crater: [f64; 3],
+    /// The last snapshot's reading: crater depth, diameter, axis depth (m) and β from the
+    /// detached ejecta (format 2 on).
+    pub crater: [f64; 4],
     /// Steps and particle-steps done so far.
     pub steps: u64,
     pub particle_steps: u64,

@@ -90,6 +90,7 @@ impl Outputs {
                 depth: c.depth,
                 diameter: c.diameter,
                 axis_depth: measurer.axis_depth(&a)?,
+                beta_detached: measurer.beta_detached(&a)?,
             };
         }
         history.push(row(
@@ -154,7 +155,7 @@ impl Job<'_> {
                 next_snapshot,
                 snapshot_index,
                 pvd,
-                crater: [depth, diameter, axis_depth],
+                crater: [depth, diameter, axis_depth, beta_detached],
                 steps,
                 particle_steps,
                 stepping_s,
@@ -180,6 +181,7 @@ impl Job<'_> {
                 depth,
                 diameter,
                 axis_depth,
+                beta_detached,
             };
             resumed_from_s.push(t_checkpoint);
             before = Before {
@@ -265,6 +267,7 @@ impl Job<'_> {
                             outputs.crater.depth,
                             outputs.crater.diameter,
                             outputs.crater.axis_depth,
+                            outputs.crater.beta_detached,
                         ],
                         steps,
                         particle_steps,
@@ -322,6 +325,8 @@ struct CraterReading {
     /// From the volume fraction averaged over a disc about the axis
     /// (`Measurer::axis_depth`).
     axis_depth: f64,
+    /// β from the ejecta no longer touching the target (`Measurer::beta_detached`).
+    beta_detached: f64,
 }
 
 impl Default for CraterReading {
@@ -330,6 +335,7 @@ impl Default for CraterReading {
             depth: f64::NAN,
             diameter: f64::NAN,
             axis_depth: f64::NAN,
+            beta_detached: f64::NAN,
         }
     }
 }
@@ -358,6 +364,7 @@ fn row<D: SceneDimension>(
         crater_depth: crater.depth,
         crater_diameter: crater.diameter,
         crater_axis_depth: crater.axis_depth,
+        beta_detached: crater.beta_detached,
         kinetic: c.kinetic,
         internal: c.internal,
         momentum_z: c.momentum[2],

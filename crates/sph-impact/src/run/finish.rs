@@ -115,6 +115,7 @@ pub(crate) fn summarise<D: SceneDimension>(
         beta: f64::NAN,
         beta_target: f64::NAN,
         beta_pendulum: f64::NAN,
+        beta_detached: measurer.beta_detached(&a)?,
         beta_change_last_half: f64::NAN,
         ejecta_mass_kg: 0.0,
         ejecta_momentum_z_kg_m_s: 0.0,

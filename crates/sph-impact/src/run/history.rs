@@ -7,7 +7,7 @@ use std::io::{BufWriter, Write};
 use std::path::{Path, PathBuf};
 
 /// The columns of `history.csv` (SI units).
-pub const HISTORY_COLUMNS: [&str; 17] = [
+pub const HISTORY_COLUMNS: [&str; 18] = [
     "t_s",
     "step",
     "dt_s",
@@ -25,6 +25,7 @@ pub const HISTORY_COLUMNS: [&str; 17] = [
     "dt_particle_id",
     "beta_pendulum",
     "crater_axis_depth_m",
+    "beta_detached",
 ];
 
 /// One row.
@@ -51,6 +52,9 @@ pub struct HistoryRow {
     /// Crater depth on the axis from the target's volume fraction (m), from the last
     /// snapshot (docs/diagnostics.md §4.4).
     pub crater_axis_depth: f64,
+    /// β from the ejecta no longer touching the target, from the last snapshot
+    /// (docs/diagnostics.md §3.1).
+    pub beta_detached: f64,
     /// Σ ½ m v² of the whole bodies (J; 2π × the solver's per-radian sum in RZ).
     pub kinetic: f64,
     /// Σ m e of the whole bodies (J).
@@ -152,7 +156,7 @@ impl History {
     pub fn push(&mut self, r: HistoryRow) -> Result<(), RunError> {
         writeln!(
             self.out,
-            "{:e},{},{:e},{},{},{:e},{:e},{:e},{:e},{:e},{:e},{:e},{},{},{},{},{:e}",
+            "{:e},{},{:e},{},{},{:e},{:e},{:e},{:e},{:e},{:e},{:e},{},{},{},{},{:e},{}",
             r.t,
             r.step,
             r.dt,
@@ -169,7 +173,8 @@ impl History {
             r.dt_reason,
             r.dt_particle_id,
             r.beta_pendulum,
-            r.crater_axis_depth
+            r.crater_axis_depth,
+            r.beta_detached
         )
         .map_err(|e| RunError::io(&self.path, e))?;
         self.rows.push(r);
@@ -210,6 +215,7 @@ fn parse_row(line: &str) -> Option<HistoryRow> {
         dt_particle_id: f[14].parse().ok()?,
         beta_pendulum: x(15)?,
         crater_axis_depth: x(16)?,
+        beta_detached: x(17)?,
     })
 }
 
@@ -261,6 +267,7 @@ mod tests {
                 crater_depth: x,
                 crater_diameter: 2.0 * x,
                 crater_axis_depth: x + 1e-3,
+                beta_detached: 2.0 - x,
                 kinetic: x,
                 internal: 0.1 + x,
                 momentum_z: -x,
@@ -287,6 +294,7 @@ mod tests {
                 r.crater_depth,
                 r.crater_diameter,
                 r.crater_axis_depth,
+                r.beta_detached,
                 r.kinetic,
                 r.internal,
                 r.momentum_z,

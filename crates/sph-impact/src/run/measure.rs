@@ -6,7 +6,7 @@ use crate::scene::{DiagnosticSetup, GeometryKind};
 use serde::Serialize;
 use sph_diagnostics::{
     AxisDepth, AxisField, Crater, CraterOptions, DensityCut, DiscKernel, EjectaCriterion, Geometry,
-    ProjectileDebris, beta_from_ejecta, beta_from_target, crater, ejecta,
+    ProjectileDebris, beta_from_ejecta, beta_from_target, crater, detached_ejecta, ejecta,
 };
 
 /// What the diagnostics need that does not change during a run.
@@ -85,6 +85,20 @@ impl Measurer {
             ejecta_mass: ej.mass,
             ejecta_momentum_z: ej.momentum_z,
         })
+    }
+
+    /// β from the ejecta that no target particle reaches any more (docs/diagnostics.md
+    /// §3.1); NaN when inactive.
+    pub fn beta_detached(&self, a: &Arrays) -> Result<f64, sph_diagnostics::ImpactError> {
+        if !self.active() {
+            return Ok(f64::NAN);
+        }
+        let free = detached_ejecta(&a.view(), &self.criterion(), &a.support)?;
+        beta_from_ejecta(
+            free.momentum_z,
+            self.projectile_mass,
+            self.setup.impact_speed,
+        )
     }
 
     /// The crater options: the setup's bin, one bin as the depth threshold, the
@@ -208,6 +222,7 @@ mod tests {
             damage: vec![0.0; n],
             density,
             specific_energy: vec![0.0; n],
+            support: vec![2.5e-3; n],
         }
     }
 
@@ -235,8 +250,9 @@ mod tests {
     }
 
     /// Two target particles and two projectile particles, one of each above the surface
-    /// and rising; the projectile (1 kg at 1 km/s) brought P_imp = 1000 kg·m/s.
-    fn target_and_debris_rising() -> Arrays {
+    /// and rising; the projectile (1 kg at 1 km/s) brought P_imp = 1000 kg·m/s. All
+    /// have support radius `h`: the rising target particle is 4 mm from the other one.
+    fn target_and_debris_rising(h: f64) -> Arrays {
         Arrays {
             position: vec![
                 [1e-3, 0.0, 2e-3],
@@ -255,12 +271,15 @@ mod tests {
             damage: vec![0.0; 4],
             density: vec![2876.0; 4],
             specific_energy: vec![0.0; 4],
+            support: vec![h; 4],
         }
     }
 
     #[test]
     fn the_pendulum_counts_escaping_projectile_debris_and_the_ejecta_beta_does_not() {
-        let b = measurer(None).beta(&target_and_debris_rising()).unwrap();
+        let b = measurer(None)
+            .beta(&target_and_debris_rising(2.5e-3))
+            .unwrap();
         // Target ejecta: 1 kg at 300 m/s.
         assert!((b.beta - 1.3).abs() < 1e-12, "{b:?}");
         // The remnant holds everything else: −1100 + 20 − 90 = −1170 kg·m/s.
@@ -268,6 +287,17 @@ mod tests {
         // The pendulum leaves out the rising debris above the surface (0.4 kg at 50 m/s):
         // −(−1100 − 90)/1000.
         assert!((b.beta_pendulum - 1.19).abs() < 1e-12, "{b:?}");
+    }
+
+    #[test]
+    fn the_detached_beta_counts_only_ejecta_out_of_the_targets_reach() {
+        // The rising target particle is 4 mm from the one below the surface: out of
+        // reach with h = 2.5 mm (all its momentum counts), within it with h = 5 mm (none).
+        let m = measurer(None);
+        let free = m.beta_detached(&target_and_debris_rising(2.5e-3)).unwrap();
+        assert!((free - 1.3).abs() < 1e-12, "{free}");
+        let held = m.beta_detached(&target_and_debris_rising(5e-3)).unwrap();
+        assert_eq!(held, 1.0);
     }
 
     #[test]

@@ -105,6 +105,9 @@ pub struct RunSummary {
     /// (above the surface, rising) is not part of the target, so
     /// β = 1 + (P_ej + P_esc)/P_imp (docs/diagnostics.md §3).
     pub beta_pendulum: f64,
+    /// β from the ejecta no longer touching the target (docs/diagnostics.md §3.1): it
+    /// rises toward `beta` as the ejecta separate, and equals it once all fly free.
+    pub beta_detached: f64,
     /// (β(t_end) − β(t_end/2))/β(t_end) from `history.csv`: how far β still moved over
     /// the run's second half (`run::beta_change_last_half`); near zero once it has
     /// settled.
