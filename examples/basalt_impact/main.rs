@@ -135,6 +135,12 @@ fn print_comparison(s: &RunSummary, e: &sph_examples::Experiment) {
         "  (β moved by {} over the second half of the run; the study reads it once settled)",
         relative(1.0 + s.beta_change_last_half, 1.0)
     );
+    // docs/diagnostics.md §3.1: equal to β once every ejectum has left the target's reach.
+    println!(
+        "  (β from the ejecta out of the target's reach {:.3}: {} of β still touches the target)",
+        s.beta_detached,
+        relative(1.0 + (s.beta - s.beta_detached) / s.beta, 1.0)
+    );
 }
 
 fn main() -> ExitCode {
