@@ -126,6 +126,9 @@ impl AxisField {
 pub struct AxisDepth {
     initial: AxisField,
     surface_z: f64,
+    /// The t = 0 field a support below the surface, the reference for every height
+    /// above that (kept, not summed again at each step of the scan).
+    reference_below_surface: f64,
 }
 
 impl AxisDepth {
@@ -141,7 +144,12 @@ impl AxisDepth {
                 "no target particle within R + H of the axis at t = 0",
             ));
         }
-        Ok(Self { initial, surface_z })
+        let reference_below_surface = initial.fraction(surface_z - initial.kernel.support());
+        Ok(Self {
+            initial,
+            surface_z,
+            reference_below_surface,
+        })
     }
 
     /// The kernel of the measure (H and R).
@@ -153,9 +161,12 @@ impl AxisDepth {
     /// support below the surface (or at `z`, if deeper). Below the initial target there
     /// is nothing to fill.
     fn filled(&self, now: &AxisField, z: f64) -> bool {
-        let reference = self
-            .initial
-            .fraction(z.min(self.surface_z - self.initial.kernel.support()));
+        let below_surface = self.surface_z - self.initial.kernel.support();
+        let reference = if z >= below_surface {
+            self.reference_below_surface
+        } else {
+            self.initial.fraction(z)
+        };
         reference > 0.0 && now.fraction(z) >= 0.5 * reference
     }
 

@@ -24,7 +24,7 @@
 //! than to that particle's mirror images, so the quarter alone decides.
 
 use crate::ejecta::{Ejecta, EjectaCriterion};
-use crate::error::ImpactError;
+use crate::error::{ImpactError, positive};
 use crate::particles_view::ParticleView;
 use std::collections::HashMap;
 
@@ -45,12 +45,8 @@ pub fn detached_ejecta(
             expected: view.len(),
         });
     }
-    if let Some(&h) = support.iter().find(|h| !(**h > 0.0 && h.is_finite())) {
-        return Err(ImpactError::BadParameter {
-            name: "support",
-            value: h,
-            reason: "must be positive and finite",
-        });
+    for &h in support {
+        positive("support", h)?;
     }
     let top = criterion.surface_z + criterion.tolerance;
     let is_target = |i: &usize| criterion.is_target(view.body[*i]);

@@ -146,24 +146,27 @@ impl Scene {
             d.axis_kernel_width,
             self.solver.scheme().n_target * finest_target,
         )?;
+        // Lengths that may be zero: finite and ≥ 0 when given, else the default.
+        let non_negative = |key: &str, value: Option<f64>, default: f64, reason: &str| match value
+            .unwrap_or(default)
+        {
+            x if x >= 0.0 && x.is_finite() => Ok(x),
+            x => Err(invalid(key, x, reason)),
+        };
         // By default as wide as the kernel: a pit two spacings wide is read, one column
         // of particles is not (docs/diagnostics.md §4.4).
-        let axis_disc_radius = d.axis_disc_radius.unwrap_or(axis_kernel_width);
-        if !(axis_disc_radius >= 0.0 && axis_disc_radius.is_finite()) {
-            return Err(invalid(
-                "diagnostics.axis_disc_radius",
-                axis_disc_radius,
-                "must be ≥ 0 (m; 0 reads the axis line alone)",
-            ));
-        }
-        let ejecta_tolerance = d.ejecta_tolerance.unwrap_or(0.0);
-        if !(ejecta_tolerance >= 0.0 && ejecta_tolerance.is_finite()) {
-            return Err(invalid(
-                "diagnostics.ejecta_tolerance",
-                ejecta_tolerance,
-                "must be ≥ 0 (m)",
-            ));
-        }
+        let axis_disc_radius = non_negative(
+            "diagnostics.axis_disc_radius",
+            d.axis_disc_radius,
+            axis_kernel_width,
+            "must be ≥ 0 (m; 0 reads the axis line alone)",
+        )?;
+        let ejecta_tolerance = non_negative(
+            "diagnostics.ejecta_tolerance",
+            d.ejecta_tolerance,
+            0.0,
+            "must be ≥ 0 (m)",
+        )?;
         let ejecta_bin = d.ejecta_bin.unwrap_or(0.02);
         if !(ejecta_bin > 0.0 && ejecta_bin.is_finite()) {
             return Err(invalid(
