@@ -57,7 +57,27 @@ pub fn crater(
     criterion: &EjectaCriterion,
     options: &CraterOptions,
 ) -> Result<Crater, ImpactError> {
-    let profile = crater_profile(view, criterion, options)?;
+    crater_against(view, criterion, options, None)
+}
+
+/// As [`crater`], with both profiles (removed material and spall) read against
+/// `reference`, the profile of the untouched target with the same options
+/// ([`CraterProfile::relative_to`]); `None` reads them against the plane
+/// `surface_z − top_offset`.
+pub fn crater_against(
+    view: &ParticleView,
+    criterion: &EjectaCriterion,
+    options: &CraterOptions,
+    reference: Option<&CraterProfile>,
+) -> Result<Crater, ImpactError> {
+    let read = |o: &CraterOptions| {
+        let p = crater_profile(view, criterion, o)?;
+        match reference {
+            Some(r) => p.relative_to(r),
+            None => Ok(p),
+        }
+    };
+    let profile = read(options)?;
     let c = measure_crater(profile, options);
     let Some(spall) = options.spall_damage else {
         return Ok(c);
@@ -66,7 +86,7 @@ pub fn crater(
         max_damage: Some(options.max_damage.map_or(spall, |m| m.min(spall))),
         ..*options
     };
-    match crater_profile(view, criterion, &cut) {
+    match read(&cut) {
         Ok(spall_profile) => Ok(c.with_spall(spall_profile, options)),
         // Every wall particle is spall (a small, wholly fractured target): the whole
         // target would be crater, and no diameter can be read; NaN says so.

@@ -36,6 +36,16 @@ pub struct CraterOptions {
     /// default 0): depth is measured from `surface_z − top_offset`, so that an untouched
     /// bed reads zero. Use Δp/2 for a lattice whose top layer sits half a spacing down.
     pub top_offset: f64,
+    /// Each wall particle covers the bins within half its own spacing of its radius,
+    /// not only the bin of its centre (needs densities in the view; default `false`).
+    /// The spacing is the particle's size from its volume m/ρ: (m/ρ)^(1/3) in 3-D, and
+    /// in RZ the side of the ring's cross-section m/(2πρr), the ring's radius being at
+    /// least half its side. With variable-resolution placement the particles away from
+    /// the impact point are spaced wider than the bins, and a bin that no top-layer
+    /// particle's centre falls in would read the top of a deeper one as its floor
+    /// (docs/diagnostics.md §4.1).
+    #[serde(default)]
+    pub footprint: bool,
     /// Optional low-density cut (needs densities in the view).
     pub density_cut: Option<DensityCut>,
     /// Optional: particles with damage above this are not wall (needs damage in the view).
@@ -57,7 +67,7 @@ impl CraterOptions {
     pub const DEFAULT_BOWL_FRACTION: f64 = 0.5;
 
     /// Defaults for particle spacing `spacing` (m): bin and depth threshold = spacing,
-    /// bowl fraction 0.5, no offset, no density or damage cut.
+    /// bowl fraction 0.5, no offset, no footprint, no density or damage cut.
     pub fn new(geometry: Geometry, spacing: f64) -> Self {
         Self {
             geometry,
@@ -65,6 +75,7 @@ impl CraterOptions {
             depth_threshold: spacing,
             bowl_fraction: Self::DEFAULT_BOWL_FRACTION,
             top_offset: 0.0,
+            footprint: false,
             density_cut: None,
             max_damage: None,
             spall_damage: None,

@@ -13,11 +13,17 @@
 //!
 //! signed: a raised rim reads negative, nothing is clamped. A bin with no wall particle
 //! has depth NaN — no evidence either way; `crater::measure_crater` says how it reads them.
+//!
+//! With [`CraterOptions::footprint`] a particle sets the floor of every bin within half
+//! its own spacing of its radius, so bins narrower than the local spacing still read the
+//! top layer. [`CraterProfile::relative_to`] reads a profile against the untouched
+//! target's, bin by bin, so that a bed whose top layer lies deeper where its particles
+//! are larger reads zero everywhere.
 
 use crate::crater_options::CraterOptions;
 use crate::ejecta::EjectaCriterion;
 use crate::error::ImpactError;
-use crate::particles_view::ParticleView;
+use crate::particles_view::{Geometry, ParticleView};
 use serde::{Deserialize, Serialize};
 
 /// Most radial bins a profile may have (a stray particle far out would otherwise make a
@@ -42,6 +48,44 @@ impl CraterProfile {
             .iter()
             .filter(|d| !d.is_nan())
             .fold(0.0f64, |h, &d| h.max(-d))
+    }
+
+    /// This profile read against `reference` (the same target untouched, same bins):
+    /// depth(s) − depth_ref(s), how far the top of the wall material at s has gone down
+    /// since. Where the reference has no value (an empty bin, or beyond its last bin:
+    /// debris past the target's side) the nearest inner reference bin with one is used,
+    /// else the nearest outer one. Errors if the bin widths differ or the reference has
+    /// no non-empty bin.
+    pub fn relative_to(&self, reference: &CraterProfile) -> Result<CraterProfile, ImpactError> {
+        if let (Some(&a), Some(&b)) = (self.radius.first(), reference.radius.first())
+            && (a - b).abs() > 1e-9 * a.abs().max(b.abs())
+        {
+            return Err(ImpactError::BadParameter {
+                name: "reference bin",
+                value: 2.0 * b,
+                reason: "the reference profile's bins differ from this profile's",
+            });
+        }
+        let finite: Vec<usize> = (0..reference.depth.len())
+            .filter(|&k| reference.depth[k].is_finite())
+            .collect();
+        if finite.is_empty() {
+            return Err(ImpactError::EmptySelection("no reference surface"));
+        }
+        let reference_at = |k: usize| {
+            // The last finite bin at or inside k, else the first one outside it.
+            let i = finite.partition_point(|&j| j <= k);
+            reference.depth[finite[i.saturating_sub(1)]]
+        };
+        Ok(CraterProfile {
+            radius: self.radius.clone(),
+            depth: self
+                .depth
+                .iter()
+                .enumerate()
+                .map(|(k, &d)| d - reference_at(k))
+                .collect(),
+        })
     }
 
     /// Number of bins.
@@ -96,17 +140,35 @@ pub fn crater_profile(
     if options.max_damage.is_some() && view.damage.is_none() {
         return Err(ImpactError::MissingField("damage"));
     }
-    let wall: Vec<(f64, f64)> = (0..view.len())
+    if options.footprint && view.density.is_none() {
+        return Err(ImpactError::MissingField("density"));
+    }
+    // Each wall particle as (inner, outer) radius of what it covers, in bins, and z.
+    let wall: Vec<(f64, f64, f64)> = (0..view.len())
         .filter(|&i| is_wall(view, criterion, options, i))
         .map(|i| {
             let p = view.position[i];
-            (options.geometry.radius(p) / options.bin, p[2])
+            let s = options.geometry.radius(p);
+            let half = match view.density {
+                Some(rho) if options.footprint => {
+                    0.5 * spacing(options.geometry, s, view.mass[i], rho[i])
+                }
+                _ => 0.0,
+            };
+            (
+                (s - half).max(0.0) / options.bin,
+                (s + half) / options.bin,
+                p[2],
+            )
         })
         .collect();
     if wall.is_empty() {
         return Err(ImpactError::EmptySelection("no target wall particles"));
     }
-    let needed = wall.iter().fold(0.0f64, |a, w| a.max(w.0)).floor() + 1.0;
+    // A particle covers the bins [k b, (k + 1) b) that its span [inner, outer) meets
+    // (at least the bin of its centre).
+    let last_bin = |inner: f64, outer: f64| (outer.ceil() - 1.0).max(inner.floor());
+    let needed = wall.iter().fold(0.0f64, |a, w| a.max(last_bin(w.0, w.1))) + 1.0;
     if needed > MAX_PROFILE_BINS as f64 {
         return Err(ImpactError::TooManyBins {
             what: "crater profile",
@@ -116,9 +178,11 @@ pub fn crater_profile(
     }
     let n = needed as usize;
     let mut floor = vec![f64::NEG_INFINITY; n];
-    for (s, z) in wall {
-        let k = (s.floor() as usize).min(n - 1);
-        floor[k] = floor[k].max(z);
+    for (inner, outer, z) in wall {
+        let last = (last_bin(inner, outer) as usize).min(n - 1);
+        for f in &mut floor[(inner.floor() as usize).min(last)..=last] {
+            *f = f.max(z);
+        }
     }
     let top = criterion.surface_z - options.top_offset;
     Ok(CraterProfile {
@@ -130,12 +194,28 @@ pub fn crater_profile(
     })
 }
 
+/// A particle's own size (m) from its volume: (m/ρ)^(1/3) in 3-D; in RZ, where `mass` is
+/// the full ring's, the side w of the ring's cross-section m/(2πρs), with the ring's
+/// radius s at least w/2 (a ring on the axis: w³ = m/(πρ)).
+fn spacing(geometry: Geometry, s: f64, mass: f64, density: f64) -> f64 {
+    match geometry {
+        Geometry::ThreeD => (mass / density).cbrt(),
+        Geometry::Axisymmetric => {
+            let on_axis = (mass / (std::f64::consts::PI * density)).cbrt();
+            if s >= 0.5 * on_axis {
+                (mass / (2.0 * std::f64::consts::PI * density * s)).sqrt()
+            } else {
+                on_axis
+            }
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::crater_options::DensityCut;
     use crate::ejecta::tests::Arrays;
-    use crate::particles_view::Geometry;
 
     /// RZ columns at r = 0.5, 1.5, 2.5, 4.5 (bin 3 empty), with chosen tops.
     fn columns() -> Arrays {
@@ -226,5 +306,86 @@ mod tests {
             crater_profile(&view, &EjectaCriterion::new(&[1], 0.0), &tiny),
             Err(ImpactError::TooManyBins { .. })
         ));
+    }
+
+    /// An RZ bed of rings spaced `d` apart (ρ = 1, ring masses 2π r d²), 4 layers deep,
+    /// its top layer half a spacing down, out to radius 12.
+    fn bed(d: f64) -> (Vec<[f64; 3]>, Vec<f64>) {
+        let (mut p, mut m) = (Vec::new(), Vec::new());
+        let mut r = 0.5 * d;
+        while r < 12.0 {
+            for k in 0..4 {
+                p.push([r, 0.0, -(k as f64 + 0.5) * d]);
+                m.push(2.0 * std::f64::consts::PI * r * d * d);
+            }
+            r += d;
+        }
+        (p, m)
+    }
+
+    #[test]
+    fn a_footprint_covers_the_bins_between_wide_columns() {
+        let (p, m) = bed(3.0);
+        let n = p.len();
+        let (v, b, rho) = (vec![[0.0; 3]; n], vec![1u16; n], vec![1.0; n]);
+        let view = ParticleView::new(&p, &v, &m, &b).with_density(&rho);
+        let c = EjectaCriterion::new(&[1], 0.0);
+        let plain = CraterOptions::new(Geometry::Axisymmetric, 1.0);
+        // Centres at r = 1.5, 4.5, 7.5, 10.5: bins 1, 4, 7, 10; the others are empty.
+        let d = crater_profile(&view, &c, &plain).unwrap().depth;
+        assert_eq!(d.len(), 11);
+        assert_eq!(d.iter().filter(|x| x.is_nan()).count(), 7, "{d:?}");
+        // Each ring covers its spacing, [r − 1.5, r + 1.5): every bin reads the top layer.
+        let wide = CraterOptions {
+            footprint: true,
+            ..plain
+        };
+        let d = crater_profile(&view, &c, &wide).unwrap().depth;
+        assert_eq!(d, vec![1.5; 12]);
+        // The footprint needs the density.
+        let bare = ParticleView::new(&p, &v, &m, &b);
+        assert_eq!(
+            crater_profile(&bare, &c, &wide),
+            Err(ImpactError::MissingField("density"))
+        );
+    }
+
+    #[test]
+    fn the_ring_size_is_its_spacing_off_the_axis_and_bounded_on_it() {
+        let ring = |r: f64, d: f64| 2.0 * std::f64::consts::PI * r * d * d * 2.0;
+        let w = spacing(Geometry::Axisymmetric, 4.0, ring(4.0, 0.5), 2.0);
+        assert!((w - 0.5).abs() < 1e-12, "{w}");
+        // On the axis the ring's radius is at least half its side: w³ = m/(πρ).
+        let m = 3.0;
+        let on = spacing(Geometry::Axisymmetric, 0.0, m, 2.0);
+        assert!((on.powi(3) - m / (std::f64::consts::PI * 2.0)).abs() < 1e-12);
+        // Continuous where the two meet (s = w/2).
+        let at = spacing(Geometry::Axisymmetric, 0.5 * on, m, 2.0);
+        assert!((at - on).abs() < 1e-12, "{at} {on}");
+        let cube = spacing(Geometry::ThreeD, 7.0, 8.0, 1.0);
+        assert!((cube - 2.0).abs() < 1e-12);
+    }
+
+    #[test]
+    fn a_profile_reads_against_its_reference_bin_by_bin() {
+        let nan = f64::NAN;
+        let prof = |depth: Vec<f64>| CraterProfile {
+            radius: (0..depth.len()).map(|k| k as f64 + 0.5).collect(),
+            depth,
+        };
+        let now = prof(vec![nan, 2.0, 3.0, nan, 5.0]);
+        let d = now.relative_to(&prof(vec![1.0, nan, 0.5])).unwrap().depth;
+        assert!(d[0].is_nan() && d[3].is_nan());
+        // Bin 1 takes the reference of bin 0, bin 4 that of the last reference bin.
+        assert_eq!((d[1], d[2], d[4]), (1.0, 2.5, 4.5));
+        // With nothing inside, the first reference bin outside is used.
+        let d = now.relative_to(&prof(vec![nan, 2.0])).unwrap().depth;
+        assert_eq!((d[1], d[2]), (0.0, 1.0));
+        assert!(now.relative_to(&prof(vec![nan, nan])).is_err());
+        let other_bins = CraterProfile {
+            radius: vec![1.0, 3.0],
+            depth: vec![0.0, 0.0],
+        };
+        assert!(now.relative_to(&other_bins).is_err());
     }
 }

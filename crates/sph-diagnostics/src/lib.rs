@@ -60,7 +60,7 @@ pub use axis_depth::{AxisDepth, AxisField};
 pub use beta::{
     ProjectileDebris, TargetBeta, beta_from_ejecta, beta_from_target, impactor_momentum,
 };
-pub use crater::{Crater, crater, measure_crater};
+pub use crater::{Crater, crater, crater_against, measure_crater};
 pub use crater_options::{CraterOptions, DensityCut};
 pub use crater_profile::{CraterProfile, crater_profile};
 pub use damage_stats::{BodyDamage, FULLY_DAMAGED, damage_stats};

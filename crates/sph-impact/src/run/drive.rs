@@ -132,7 +132,7 @@ impl Job<'_> {
                 .sum(),
             setup,
             geometry: D::KIND,
-            top_offset: 0.0,
+            reference: None,
             target_density,
             axis: None,
         };

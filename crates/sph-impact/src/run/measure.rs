@@ -5,8 +5,9 @@ use crate::run::arrays::Arrays;
 use crate::scene::{DiagnosticSetup, GeometryKind};
 use serde::Serialize;
 use sph_diagnostics::{
-    AxisDepth, AxisField, Crater, CraterOptions, DensityCut, DiscKernel, EjectaCriterion, Geometry,
-    ProjectileDebris, beta_from_ejecta, beta_from_target, crater, detached_ejecta, ejecta,
+    AxisDepth, AxisField, Crater, CraterOptions, CraterProfile, DensityCut, DiscKernel,
+    EjectaCriterion, Geometry, ProjectileDebris, beta_from_ejecta, beta_from_target,
+    crater_against, detached_ejecta, ejecta,
 };
 
 /// What the diagnostics need that does not change during a run.
@@ -20,9 +21,9 @@ pub(crate) struct Measurer {
     pub initial_target_momentum_z: f64,
     /// 3-D or RZ (how the distance from the axis is measured).
     pub geometry: GeometryKind,
-    /// Height of the surface above the top particle layer (m), from t = 0
-    /// ([`Measurer::calibrate`]).
-    pub top_offset: f64,
+    /// The untouched target's crater profile at t = 0, which later profiles are read
+    /// against ([`Measurer::calibrate`]); `None` before calibration.
+    pub reference: Option<CraterProfile>,
     /// Reference density of the (first) target's material (kg/m³), for the rubble cut.
     pub target_density: f64,
     /// The axis depth against the t = 0 field ([`Measurer::calibrate`]); `None` before
@@ -101,11 +102,11 @@ impl Measurer {
         )
     }
 
-    /// The crater options: the setup's bin, one bin as the depth threshold, the
-    /// measured offset of the top layer, the setup's spall damage.
+    /// The crater options: the setup's bin, one bin as the depth threshold, each
+    /// particle covering its own spacing, the setup's spall damage.
     pub fn crater_options(&self) -> CraterOptions {
         let mut o = CraterOptions::new(self.diagnostic_geometry(), self.setup.crater_bin);
-        o.top_offset = self.top_offset;
+        o.footprint = true;
         o.spall_damage = self.setup.spall_damage;
         o.density_cut = self.setup.rubble_density.map(|f| DensityCut {
             reference_density: self.target_density,
@@ -132,11 +133,13 @@ impl Measurer {
         )
     }
 
-    /// Sets the top-layer offset from the untouched target at t = 0: the median depth of
-    /// its profile. A lattice's top layer sits half a spacing below the surface and the
-    /// variable-resolution layers somewhere below it; with the offset an untouched bed
-    /// reads depth 0 (docs/diagnostics.md §4.1). Keeps the t = 0 field on the axis as
-    /// the axis depth's reference (§4.4).
+    /// Keeps the untouched target's crater profile at t = 0 as the reference the later
+    /// profiles are read against, bin by bin. A lattice's top layer sits half a spacing
+    /// below the surface and the variable-resolution layers deeper where the particles
+    /// are larger; against the reference an untouched bed reads depth 0 at every radius
+    /// (docs/diagnostics.md §4.1). (Until session 32 one offset, the median depth over
+    /// all bins, was subtracted; far from the axis that median read the tops of deeper
+    /// layers.) Keeps the t = 0 field on the axis as the axis depth's reference (§4.4).
     pub fn calibrate(&mut self, a: &Arrays) -> Result<(), sph_diagnostics::ImpactError> {
         self.axis = None;
         if self.active() {
@@ -147,19 +150,8 @@ impl Measurer {
                 self.axis = Some(AxisDepth::new(field, self.setup.surface_z)?);
             }
         }
-        self.top_offset = 0.0;
-        if let Some(c) = self.crater(a)? {
-            let mut d: Vec<f64> = c
-                .profile
-                .depth
-                .into_iter()
-                .filter(|x| x.is_finite())
-                .collect();
-            if !d.is_empty() {
-                d.sort_by(f64::total_cmp);
-                self.top_offset = d[d.len() / 2];
-            }
-        }
+        self.reference = None;
+        self.reference = self.crater(a)?.map(|c| c.profile);
         Ok(())
     }
 
@@ -177,7 +169,13 @@ impl Measurer {
         if !self.active() {
             return Ok(None);
         }
-        crater(&a.view(), &self.criterion(), &self.crater_options()).map(Some)
+        crater_against(
+            &a.view(),
+            &self.criterion(),
+            &self.crater_options(),
+            self.reference.as_ref(),
+        )
+        .map(Some)
     }
 }
 
@@ -204,7 +202,7 @@ mod tests {
             projectile_mass: 1.0,
             initial_target_momentum_z: 0.0,
             geometry: GeometryKind::Rz,
-            top_offset: 0.0,
+            reference: None,
             target_density: 2876.0,
             axis: None,
         }
@@ -243,7 +241,11 @@ mod tests {
             position.push([r, 0.0, -6.0e-3]);
             density.push(0.3 * 2876.0);
         }
-        let mass = vec![1.0; position.len()];
+        // Rings 1 mm square at the reference density (the rubble: dilated).
+        let mass = position
+            .iter()
+            .map(|p| 2.0 * std::f64::consts::PI * p[0] * 1e-6 * 2876.0)
+            .collect();
         m.crater(&at_rest(position, mass, density))
             .unwrap()
             .unwrap()
@@ -341,5 +343,55 @@ mod tests {
         hollow.calibrate(&bed(5e-3)).unwrap();
         assert!(hollow.axis.is_none());
         assert!(hollow.axis_depth(&bed(5e-3)).unwrap().is_nan());
+    }
+
+    /// An RZ bed like a variable-resolution target: rings 0.5 mm apart out to 5 mm,
+    /// 1 mm out to 10 mm and 2 mm out to 30 mm, 10 layers each, the top layer half a
+    /// spacing down and every other layer shifted by half a spacing in r (so a bin
+    /// between two top rings holds the top of the layer below). Rings with r < `bowl.0`
+    /// and z > −`bowl.1` are left out.
+    fn graded_bed(bowl: (f64, f64)) -> Arrays {
+        let (mut position, mut mass) = (Vec::new(), Vec::new());
+        for (from, to, d) in [
+            (0.0, 5e-3, 0.5e-3),
+            (5e-3, 10e-3, 1e-3),
+            (10e-3, 30e-3, 2e-3),
+        ] {
+            for k in 0..10 {
+                let z = -(k as f64 + 0.5) * d;
+                let mut r = from + if k % 2 == 0 { 0.5 } else { 1.0 } * d;
+                while r < to {
+                    if !(r < bowl.0 && z > -bowl.1) {
+                        position.push([r, 0.0, z]);
+                        mass.push(2.0 * std::f64::consts::PI * r * d * d * 2876.0);
+                    }
+                    r += d;
+                }
+            }
+        }
+        let density = vec![2876.0; position.len()];
+        at_rest(position, mass, density)
+    }
+
+    #[test]
+    fn a_graded_bed_reads_no_crater_untouched_and_its_bowl_when_carved() {
+        let mut m = measurer(None);
+        m.setup.crater_bin = 0.5e-3;
+        let untouched = graded_bed((0.0, 0.0));
+        // Against the plane the untouched bed reads its top layer's depth, half the
+        // local spacing: 1 mm where the rings are 2 mm apart.
+        let plain = m.crater(&untouched).unwrap().unwrap();
+        let spread = plain.profile.depth.iter().fold(0.0f64, |a, d| a.max(*d));
+        assert!(spread > 0.9e-3, "{spread}");
+        m.calibrate(&untouched).unwrap();
+        let c = m.crater(&untouched).unwrap().unwrap();
+        assert!(c.profile.depth.iter().all(|d| d.abs() < 1e-15), "{c:?}");
+        assert_eq!((c.depth, c.diameter), (0.0, 0.0));
+        // A bowl 4 mm deep whose edge falls between the rings at r = 3.0 and 3.25 mm
+        // (a ring straddling the edge would cover half a spacing of the bowl): its
+        // floor is the layer at −4.25 mm, the untouched top −0.25 mm.
+        let c = m.crater(&graded_bed((3.1e-3, 4e-3))).unwrap().unwrap();
+        assert!((c.depth - 4.0e-3).abs() < 1e-12, "{}", c.depth);
+        assert!((c.diameter - 6.0e-3).abs() < 1e-12, "{}", c.diameter);
     }
 }
