@@ -7,7 +7,7 @@ use serde::Serialize;
 use sph_diagnostics::{
     AxisDepth, AxisField, Crater, CraterOptions, CraterProfile, DensityCut, DiscKernel,
     EjectaCriterion, Geometry, ProjectileDebris, beta_from_ejecta, beta_from_target,
-    crater_against, detached_ejecta, ejecta,
+    crater_against, crater_profile, detached_ejecta, ejecta,
 };
 
 /// What the diagnostics need that does not change during a run.
@@ -150,8 +150,16 @@ impl Measurer {
                 self.axis = Some(AxisDepth::new(field, self.setup.surface_z)?);
             }
         }
-        self.reference = None;
-        self.reference = self.crater(a)?.map(|c| c.profile);
+        // The profile alone, against the plane: the sizes and the spall are not needed.
+        self.reference = if self.active() {
+            Some(crater_profile(
+                &a.view(),
+                &self.criterion(),
+                &self.crater_options(),
+            )?)
+        } else {
+            None
+        };
         Ok(())
     }
 
