@@ -35,7 +35,10 @@
 //! One formula serves RZ, a 3-D quarter model and a full 3-D body. An RZ ring is stored
 //! with its whole ring mass (`ParticleView`); K depends on the distance from the axis
 //! alone. A quarter model's particle carries the mass of its four mirror copies, all the
-//! same distance from the axis.
+//! same distance from the axis. In plane strain (volumes per unit depth) and in 1-D
+//! (volumes per unit area) K is the kernel of that dimension averaged over the segment
+//! |x| < R, or the 1-D kernel ([`DiscKernel::in_dimension`]; `AxisField::new` picks it
+//! from the geometry).
 
 use crate::disc_kernel::DiscKernel;
 use crate::ejecta::EjectaCriterion;
@@ -74,6 +77,9 @@ impl AxisField {
         view.validate()?;
         criterion.check()?;
         let density = view.density.ok_or(ImpactError::MissingField("density"))?;
+        // The kernel of the particles' own dimension: volumes are per unit depth in
+        // plane strain, per unit area in 1-D.
+        let kernel = kernel.in_dimension(geometry.dimension())?;
         let reach = kernel.reach();
         let mut members: Vec<Member> = (0..view.len())
             .filter(|&i| criterion.is_target(view.body[i]) && !criterion.is_ejecta(view, i))

@@ -196,10 +196,14 @@ pub fn crater_profile(
 
 /// A particle's own size (m) from its volume: (m/ρ)^(1/3) in 3-D; in RZ, where `mass` is
 /// the full ring's, the side w of the ring's cross-section m/(2πρs), with the ring's
-/// radius s at least w/2 (a ring on the axis: w³ = m/(πρ)).
+/// radius s at least w/2 (a ring on the axis: w³ = m/(πρ)); in plane strain, where
+/// `mass` is per unit depth, the side of its square section √(m/ρ); in 1-D, where it is
+/// per unit area, its thickness m/ρ.
 fn spacing(geometry: Geometry, s: f64, mass: f64, density: f64) -> f64 {
     match geometry {
         Geometry::ThreeD => (mass / density).cbrt(),
+        Geometry::Plane => (mass / density).sqrt(),
+        Geometry::Line => mass / density,
         Geometry::Axisymmetric => {
             let on_axis = (mass / (std::f64::consts::PI * density)).cbrt();
             if s >= 0.5 * on_axis {
@@ -363,6 +367,8 @@ mod tests {
         let at = spacing(Geometry::Axisymmetric, 0.5 * on, m, 2.0);
         assert!((at - on).abs() < 1e-12, "{at} {on}");
         let cube = spacing(Geometry::ThreeD, 7.0, 8.0, 1.0);
+        assert_eq!(spacing(Geometry::Plane, 7.0, 8.0, 2.0), 2.0);
+        assert_eq!(spacing(Geometry::Line, 0.0, 8.0, 2.0), 4.0);
         assert!((cube - 2.0).abs() < 1e-12);
     }
 

@@ -28,6 +28,20 @@
 //! K depends on s alone, not on the azimuth, so an RZ ring (with its whole ring mass)
 //! and a 3-D particle at the same distance from the axis weigh the same. R = 0 is the
 //! limit of a line: K = W(√(s² + Δz²), H), the field on the axis itself.
+//!
+//! In lower dimensions ([`DiscKernel::in_dimension`]) the same average is taken over
+//! what the disc becomes. In plane strain (2-D particles in (x, z), volumes per unit
+//! depth) the disc is the segment |x| < R of the line z and W the 2-D kernel:
+//!
+//! ```text
+//! K₂(s, Δz) = 1/(2R) ∫_{−R}^{R} W₂(√((x − s)² + Δz²), H) dx,
+//! ```
+//!
+//! integrated over the part of the segment within the support, |x − s| < Q, by the same
+//! smoothed Gauss rule on each side of the peak x = s (within 1e-6 of the peak against a
+//! 20 000-point midpoint rule); R = 0 gives
+//! W₂(√(s² + Δz²), H). In 1-D (volumes per unit area) the disc is the whole plane z and
+//! K₁ = W₁(|Δz|, H).
 
 use crate::error::{ImpactError, finite, positive};
 use sph_kernel::{Kernel, WendlandC2};
@@ -48,6 +62,7 @@ const GAUSS_LEGENDRE_8: [(f64, f64); 4] = [
 pub struct DiscKernel {
     support: f64,
     radius: f64,
+    dimension: usize,
 }
 
 impl DiscKernel {
@@ -63,7 +78,29 @@ impl DiscKernel {
                 reason: "must be zero (the axis line) or positive",
             });
         }
-        Ok(Self { support, radius })
+        Ok(Self {
+            support,
+            radius,
+            dimension: 3,
+        })
+    }
+
+    /// The same kernel in `dimension` (1, 2 or 3) space dimensions (module docs): the
+    /// kernel [`Self::new`] gives is 3-D.
+    pub fn in_dimension(self, dimension: usize) -> Result<Self, ImpactError> {
+        if !(1..=3).contains(&dimension) {
+            return Err(ImpactError::BadParameter {
+                name: "axis kernel dimension",
+                value: dimension as f64,
+                reason: "must be 1, 2 or 3",
+            });
+        }
+        Ok(Self { dimension, ..self })
+    }
+
+    /// The number of space dimensions of the kernel.
+    pub fn dimension(&self) -> usize {
+        self.dimension
     }
 
     /// The kernel's support radius H (m).
@@ -89,6 +126,11 @@ impl DiscKernel {
         if q_max2 <= 0.0 || s >= r + h {
             return 0.0;
         }
+        match self.dimension {
+            1 => return WendlandC2.w_radial(1, dz.abs(), h),
+            2 => return self.segment_value(s, dz, q_max2.sqrt()),
+            _ => {}
+        }
         if r == 0.0 {
             return WendlandC2.w_radial(3, (s * s + dz * dz).sqrt(), h);
         }
@@ -105,6 +147,28 @@ impl DiscKernel {
             }
         }
         sum / (PI * r * r)
+    }
+
+    /// K₂(s, Δz): the 2-D kernel averaged over the segment |x| < R (module docs); `q_max`
+    /// is the support's half-width at height Δz, √(H² − Δz²).
+    fn segment_value(&self, s: f64, dz: f64, q_max: f64) -> f64 {
+        let (h, r) = (self.support, self.radius);
+        let w = |x: f64| WendlandC2.w_radial(2, ((x - s) * (x - s) + dz * dz).sqrt(), h);
+        if r == 0.0 {
+            return w(0.0);
+        }
+        let (a, b) = ((s - q_max).max(-r), (s + q_max).min(r));
+        if b <= a {
+            return 0.0;
+        }
+        // Split at the kernel's peak x = s, where W₂'s q³ term makes the integrand
+        // least smooth.
+        let total = if a < s && s < b {
+            smoothed_gauss(&w, a, s) + smoothed_gauss(&w, s, b)
+        } else {
+            smoothed_gauss(&w, a, b)
+        };
+        total / (2.0 * r)
     }
 
     /// α(q): the angle of the circle of radius `q` about a point `s` from the axis that
@@ -162,6 +226,59 @@ mod tests {
             }
         }
         sum * (r / nr as f64) * (2.0 * PI / nt as f64) / (PI * r * r)
+    }
+
+    /// In plane strain: the mean of the 2-D kernel over the segment |x| < R by a midpoint
+    /// rule, and the whole plane's integral of K₂ is 1 (a body filling the plane reads
+    /// φ = 1). In 1-D: the 1-D kernel, whose integral over z is 1.
+    #[test]
+    fn lower_dimensions_average_over_the_segment_and_the_plane() {
+        let h = 1.25e-3;
+        let k2 = DiscKernel::new(h, 0.8 * h)
+            .unwrap()
+            .in_dimension(2)
+            .unwrap();
+        let peak = WendlandC2.w_radial(2, 0.0, h);
+        let r = k2.radius();
+        for (s, dz) in [
+            (0.0, 0.0),
+            (0.3e-3, 0.2e-3),
+            (1.0e-3, 0.9e-3),
+            (1.9e-3, 0.3e-3),
+        ] {
+            let n = 20_000;
+            let slow = (0..n)
+                .map(|i| {
+                    let x = -r + (i as f64 + 0.5) / n as f64 * 2.0 * r;
+                    WendlandC2.w_radial(2, ((x - s).powi(2) + dz * dz).sqrt(), h)
+                })
+                .sum::<f64>()
+                / n as f64;
+            let fast = k2.value(s, dz);
+            assert!(
+                (fast - slow).abs() < 1e-6 * peak,
+                "s {s} dz {dz}: {fast} against {slow}"
+            );
+        }
+        // ∫∫ K₂ dx dz over the plane, x = ±s.
+        let (n, span) = (400, r + h);
+        let d = span / n as f64;
+        let mut total = 0.0;
+        for i in 0..n {
+            let s = (i as f64 + 0.5) * d;
+            for j in 0..2 * n {
+                let dz = -h + (j as f64 + 0.5) * h / n as f64;
+                total += 2.0 * k2.value(s, dz) * d * h / n as f64;
+            }
+        }
+        assert!((total - 1.0).abs() < 1e-3, "∫∫ K₂ = {total}");
+        let k1 = DiscKernel::new(h, h).unwrap().in_dimension(1).unwrap();
+        assert_eq!(k1.value(0.0, 0.4e-3), WendlandC2.w_radial(1, 0.4e-3, h));
+        let line: f64 = (0..2000)
+            .map(|j| k1.value(0.0, -h + (j as f64 + 0.5) * h / 1000.0) * h / 1000.0)
+            .sum();
+        assert!((line - 1.0).abs() < 1e-5, "∫ K₁ = {line}");
+        assert!(DiscKernel::new(h, h).unwrap().in_dimension(4).is_err());
     }
 
     #[test]

@@ -136,6 +136,13 @@ pub enum Geometry {
     /// Axisymmetric (RZ): position is (r, 0, z); the radius is |x|. The absolute value
     /// makes a mirrored half-plane (r < 0) read the same.
     Axisymmetric,
+    /// Plane strain: position is (x, 0, z) in the section y = 0, masses per unit depth
+    /// (kg/m); the "radius" is the distance |x| from the impact plane x = 0, so a crater
+    /// is a trench and its diameter the trench's width.
+    Plane,
+    /// Uniaxial strain (1-D): position is (0, 0, z), masses per unit area (kg/m²); every
+    /// particle is on the axis (radius 0).
+    Line,
 }
 
 impl Geometry {
@@ -143,7 +150,18 @@ impl Geometry {
     pub fn radius(self, position: [f64; 3]) -> f64 {
         match self {
             Geometry::ThreeD => position[0].hypot(position[1]),
-            Geometry::Axisymmetric => position[0].abs(),
+            Geometry::Axisymmetric | Geometry::Plane => position[0].abs(),
+            Geometry::Line => 0.0,
+        }
+    }
+
+    /// The number of space dimensions the particles fill: 3 (3-D and RZ, whose rings
+    /// fill 3-D space), 2 (plane) or 1 (line).
+    pub fn dimension(self) -> usize {
+        match self {
+            Geometry::ThreeD | Geometry::Axisymmetric => 3,
+            Geometry::Plane => 2,
+            Geometry::Line => 1,
         }
     }
 }
@@ -266,5 +284,7 @@ mod tests {
     fn radius_from_the_axis() {
         assert_eq!(Geometry::ThreeD.radius([3.0, -4.0, 7.0]), 5.0);
         assert_eq!(Geometry::Axisymmetric.radius([-3.0, 0.0, 7.0]), 3.0);
+        assert_eq!(Geometry::Plane.radius([-3.0, 0.0, 7.0]), 3.0);
+        assert_eq!(Geometry::Line.radius([0.0, 0.0, 7.0]), 0.0);
     }
 }

@@ -38,6 +38,8 @@
 //! * [`fibonacci`] — the variable-resolution placement ([`FibonacciPlacement`]).
 //! * [`rz`] — placement in the meridional half-plane for axisymmetric (RZ) runs
 //!   ([`rz_lattice`], [`RzLayeredPlacement`]; masses per radian).
+//! * [`section`] — the plane (y = 0) and line (x = y = 0) sections of a 3-D shape, for
+//!   plane-strain and uniaxial-strain runs ([`PlaneSection`], [`LineSection`]).
 //! * [`mod@revolve`] — 3-D particles from an RZ placement, each ring as points evenly
 //!   spaced around the axis ([`revolve()`]).
 //! * [`placement`] — the common result [`BodyParticles`].
@@ -61,6 +63,7 @@ pub mod placement;
 pub mod quality;
 pub mod revolve;
 pub mod rz;
+pub mod section;
 pub mod shape;
 pub mod sphere;
 
@@ -75,5 +78,6 @@ pub use placement::BodyParticles;
 pub use quality::{CloseApproach, closest_approach};
 pub use revolve::{revolve, ring_point_count};
 pub use rz::{RzLayeredPlacement, rz_lattice, rz_layer_point_count};
+pub use section::{LineSection, PlaneSection};
 pub use shape::{Aabb, Shape, estimate_volume, unit_ball_volume};
 pub use sphere::Sphere;

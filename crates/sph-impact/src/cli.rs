@@ -214,16 +214,38 @@ pub fn run_scene(
     })?;
     if !options.quiet {
         println!("run directory        {}", dir.display());
-        println!(
-            "crater diameter      {:.2} mm (bowl {:.2} mm), depth {:.2} mm",
-            summary.crater_diameter_m * 1e3,
-            summary.bowl_diameter_m * 1e3,
-            summary.crater_depth_m * 1e3
-        );
+        let geometry = summary.geometry;
+        if geometry == crate::scene::GeometryKind::Line {
+            println!(
+                "crater depth         {:.2} mm (1-D: no diameter)",
+                summary.crater_depth_m * 1e3
+            );
+        } else {
+            let (size, what) = if geometry == crate::scene::GeometryKind::Plane {
+                ("trench width", "plane strain")
+            } else {
+                ("crater diameter", "")
+            };
+            println!(
+                "{size:<20} {:.2} mm (bowl {:.2} mm), depth {:.2} mm{}",
+                summary.crater_diameter_m * 1e3,
+                summary.bowl_diameter_m * 1e3,
+                summary.crater_depth_m * 1e3,
+                if what.is_empty() {
+                    String::new()
+                } else {
+                    format!(" ({what})")
+                }
+            );
+        }
         println!(
             "beta                 {:.4} (from the target: {:.4}; as a pendulum sees it: {:.4}); \
-             ejecta {:.4e} kg",
-            summary.beta, summary.beta_target, summary.beta_pendulum, summary.ejecta_mass_kg
+             ejecta {:.4e} {}",
+            summary.beta,
+            summary.beta_target,
+            summary.beta_pendulum,
+            summary.ejecta_mass_kg,
+            geometry.mass_unit()
         );
         println!(
             "cost                 {} particles, {} steps, {:.1} s wall, {:.3e} particle-steps/s",

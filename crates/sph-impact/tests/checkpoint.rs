@@ -190,7 +190,7 @@ fn a_solver_checkpoint_of_another_set_up_is_refused_and_changes_nothing() {
     let scene = rz_scene();
     let rz = |scale: f64| match scene.build_scaled(scale).unwrap().simulation {
         SceneSimulation::Rz(sim) => sim,
-        SceneSimulation::ThreeD(_) => panic!("the scene is RZ"),
+        _ => panic!("the scene is RZ"),
     };
     let mut sim = rz(1.0);
     sim.step(1e-9).unwrap();

@@ -17,6 +17,15 @@ struct Shape {
     spall_radius: f64,
 }
 
+/// The bed's crater in most tests: a bowl 8.3 deep and 10.4 wide in a spall zone 2.6
+/// deep out to 17.3 spacings.
+const STANDARD: Shape = Shape {
+    bowl_depth: 8.3,
+    bowl_radius: 10.4,
+    spall_depth: 2.6,
+    spall_radius: 17.3,
+};
+
 impl Shape {
     fn floor(&self, s: f64) -> f64 {
         if s >= self.spall_radius {
@@ -36,6 +45,8 @@ fn bed(shape: Shape, geometry: Geometry, half: i32, dx: f64, dz: f64) -> Vec<[f6
             .flat_map(|i| (-half..=half).map(move |j| (i as f64 * dx, j as f64 * dx)))
             .collect(),
         Geometry::Axisymmetric => (0..half).map(|i| ((i as f64 + 0.5) * dx, 0.0)).collect(),
+        Geometry::Plane => (-half..=half).map(|i| (i as f64 * dx, 0.0)).collect(),
+        Geometry::Line => vec![(0.0, 0.0)],
     };
     let layers = (15.0 * dx / dz).round() as i32;
     let mut p = Vec::new();
@@ -62,12 +73,7 @@ fn view_arrays(p: &[[f64; 3]], body: u16) -> (Vec<[f64; 3]>, Vec<f64>, Vec<u16>)
 #[test]
 fn three_d_bed_recovers_depth_diameter_and_bowl_within_one_bin() {
     let dx = 1e-3;
-    let shape = Shape {
-        bowl_depth: 8.3,
-        bowl_radius: 10.4,
-        spall_depth: 2.6,
-        spall_radius: 17.3,
-    };
+    let shape = STANDARD;
     let mut p = bed(shape, Geometry::ThreeD, 24, dx, dx);
     let (mut v, mut m, mut b) = view_arrays(&p, 1);
     // A raised rim one spacing high just outside the spall zone.
@@ -122,12 +128,7 @@ fn three_d_bed_recovers_depth_diameter_and_bowl_within_one_bin() {
 #[test]
 fn rz_bed_and_3d_bed_agree() {
     let dx = 5e-4;
-    let shape = Shape {
-        bowl_depth: 8.3,
-        bowl_radius: 10.4,
-        spall_depth: 2.6,
-        spall_radius: 17.3,
-    };
+    let shape = STANDARD;
     let p = bed(shape, Geometry::Axisymmetric, 30, dx, dx);
     let (v, m, b) = view_arrays(&p, 2);
     let view = ParticleView::new(&p, &v, &m, &b);
@@ -145,6 +146,48 @@ fn rz_bed_and_3d_bed_agree() {
         c.bowl_diameter
     );
     assert_eq!(c.rim_height, 0.0);
+}
+
+/// In plane strain the same profile is a trench across x, read by |x|: its depth and
+/// width as the 3-D bed's within a bin; in 1-D the one column's depth.
+#[test]
+fn plane_trench_and_line_column_are_recovered() {
+    let dx = 5e-4;
+    let shape = STANDARD;
+    for geometry in [Geometry::Plane, Geometry::Line] {
+        let p = bed(shape, geometry, 30, dx, dx);
+        let (v, m, b) = view_arrays(&p, 1);
+        let view = ParticleView::new(&p, &v, &m, &b);
+        let c = crater(
+            &view,
+            &EjectaCriterion::new(&[1], 0.0),
+            &CraterOptions::new(geometry, dx),
+        )
+        .unwrap();
+        assert!(
+            (c.depth - 9.0 * dx).abs() < 1e-12,
+            "{geometry:?} depth {}",
+            c.depth
+        );
+        if geometry == Geometry::Plane {
+            // The columns sit on the bins' lower edges: |x| = 17 dx is inside the spall
+            // (17.3 dx), so the bin [17, 18) dx is removed whole and the width reads
+            // 2 × 18 dx, against 34.6 dx (one bin on each side at most).
+            assert!(
+                (c.diameter - 36.0 * dx).abs() < 1e-12,
+                "width {}",
+                c.diameter
+            );
+            // Bowl (depth ≥ 4.5 dx): the column at |x| = 7 dx is 5 layers deep (floor
+            // −4.54 dx), the one at 8 dx 4 layers, so the bin [7, 8) dx is bowl whole:
+            // 16 dx against the paraboloid's 14.71 dx.
+            assert!(
+                (c.bowl_diameter - 16.0 * dx).abs() < 1e-12,
+                "bowl {}",
+                c.bowl_diameter
+            );
+        }
+    }
 }
 
 #[test]

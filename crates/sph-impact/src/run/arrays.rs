@@ -2,10 +2,8 @@
 //! read, copied once per measurement: in RZ the rings as points (r, 0, z) with velocity
 //! (v_r, 0, v_z) and their whole mass, 2π × mass per radian (docs/diagnostics.md §1).
 
-use crate::Simulation;
-use crate::scene::SceneDimension;
+use crate::scene::{SceneDimension, SimOf};
 use sph_diagnostics::ParticleView;
-use sph_kernel::KernelChoice;
 
 /// One instant's particle arrays.
 pub(crate) struct Arrays {
@@ -23,7 +21,7 @@ pub(crate) struct Arrays {
 impl Arrays {
     /// Copies the current state of `sim`; each particle's mass is that of all the
     /// `copies` it stands for (4 in a 3-D quarter model, else 1; in RZ also × 2π).
-    pub fn of<D: SceneDimension>(sim: &Simulation<D, KernelChoice>, copies: f64) -> Self {
+    pub fn of<D: SceneDimension>(sim: &SimOf<D>, copies: f64) -> Self {
         let p = &sim.state.particles;
         Self {
             position: p.position.iter().map(|&x| D::to_scene(x)).collect(),

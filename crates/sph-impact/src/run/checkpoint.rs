@@ -67,7 +67,7 @@ pub(crate) struct RunCheckpoint<D: SceneDimension> {
     pub history_rows: usize,
     /// The simulated times of the checkpoints the run has resumed from so far.
     pub resumed_from_s: Vec<f64>,
-    pub solver: SolverCheckpoint<D>,
+    pub solver: SolverCheckpoint<D::Dim>,
 }
 
 impl<D: SceneDimension> RunCheckpoint<D> {

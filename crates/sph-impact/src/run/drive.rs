@@ -2,7 +2,6 @@
 //! every interval, β and totals into `history.csv`, the progress line; then the final
 //! diagnostics ([`super::finish`]).
 
-use crate::Simulation;
 use crate::run::arrays::Arrays;
 use crate::run::checkpoint::{CHECKPOINT_FILE, RunCheckpoint};
 use crate::run::error::RunError;
@@ -11,10 +10,9 @@ use crate::run::measure::{BetaMeasure, Measurer};
 use crate::run::progress::Progress;
 use crate::run::summary::{RunSummary, Totals};
 use crate::run::{RunOptions, finish, snapshot};
-use crate::scene::{BodyInfo, Scene, SceneDimension};
+use crate::scene::{BodyInfo, Scene, SceneDimension, SimOf};
 use crate::solver::StepInfo;
 use sph_diagnostics::Pvd;
-use sph_kernel::KernelChoice;
 use std::path::Path;
 use std::time::Instant;
 
@@ -32,7 +30,7 @@ pub(crate) struct Job<'a> {
 
 /// What the loop hands to the final diagnostics.
 pub(crate) struct Stepped<D: SceneDimension> {
-    pub sim: Simulation<D, KernelChoice>,
+    pub sim: SimOf<D>,
     pub bodies: Vec<BodyInfo>,
     pub measurer: Measurer,
     pub history: History,
@@ -74,16 +72,16 @@ impl Outputs {
     /// row after the step `step` (`None` at t = 0).
     fn take<D: SceneDimension>(
         &mut self,
-        sim: &Simulation<D, KernelChoice>,
+        sim: &SimOf<D>,
         copies: f64,
         dir: &Path,
         measurer: &Measurer,
         history: &mut History,
         step: Option<&StepInfo>,
     ) -> Result<(), RunError> {
-        let a = Arrays::of(sim, copies);
+        let a = Arrays::of::<D>(sim, copies);
         let (pressure, _) = sim.pressure_and_sound_speed();
-        snapshot::write_snapshot(sim, &a, &pressure, dir, self.index, &mut self.pvd)?;
+        snapshot::write_snapshot::<D>(sim, &a, &pressure, dir, self.index, &mut self.pvd)?;
         self.index += 1;
         if let Some(c) = measurer.crater(&a)? {
             self.crater = CraterReading {
@@ -93,7 +91,7 @@ impl Outputs {
                 beta_detached: measurer.beta_detached(&a)?,
             };
         }
-        history.push(row(
+        history.push(row::<D>(
             sim,
             copies,
             &measurer.beta(&a)?,
@@ -109,7 +107,7 @@ impl Job<'_> {
     /// outputs, and returns the summary.
     pub fn run<D: SceneDimension>(
         &self,
-        mut sim: Simulation<D, KernelChoice>,
+        mut sim: SimOf<D>,
         bodies: Vec<BodyInfo>,
     ) -> Result<RunSummary, RunError> {
         let (scene, dir, end_time) = (self.scene, self.dir, self.end_time);
@@ -136,11 +134,11 @@ impl Job<'_> {
             target_density,
             axis: None,
         };
-        measurer.calibrate(&Arrays::of(&sim, copies))?;
+        measurer.calibrate(&Arrays::of::<D>(&sim, copies))?;
         let n = sim.state.particles.len();
         let interval = scene.output.interval(end_time);
         let history_every = scene.output.history_every.unwrap_or(1);
-        let initial = Totals::of(&sim, copies);
+        let initial = Totals::of::<D>(&sim, copies);
         let history_path = dir.join("history.csv");
         let mut progress = Progress::new(self.options.quiet, end_time, n);
         let mut outputs = Outputs {
@@ -209,7 +207,7 @@ impl Job<'_> {
                 _ => {}
             }
             let mut history = History::create(&history_path)?;
-            outputs.take(&sim, copies, dir, &measurer, &mut history, None)?;
+            outputs.take::<D>(&sim, copies, dir, &measurer, &mut history, None)?;
             (history, interval.min(end_time))
         };
         let t_step = Instant::now();
@@ -217,7 +215,7 @@ impl Job<'_> {
         let mut particle_steps: u64 = before.particle_steps;
         let mut free_flight = 0;
         let tol = 1e-12 * end_time;
-        let failed = |sim: &Simulation<D, KernelChoice>, e: crate::SolverError| RunError::Solver {
+        let failed = |sim: &SimOf<D>, e: crate::SolverError| RunError::Solver {
             time: sim.state.time,
             step: sim.state.step,
             message: e.to_string(),
@@ -243,7 +241,7 @@ impl Job<'_> {
             }
             if at_snapshot || at_end {
                 sim.with_free_flight(|sim| {
-                    outputs.take(sim, copies, dir, &measurer, &mut history, Some(&info))
+                    outputs.take::<D>(sim, copies, dir, &measurer, &mut history, Some(&info))
                 })?;
                 while next_snapshot <= sim.state.time + tol {
                     next_snapshot += interval;
@@ -253,7 +251,7 @@ impl Job<'_> {
                     // ended): a run resumed to a later end time restarts from here.
                     history.flush()?;
                     let (format, version, geometry) = RunCheckpoint::<D>::tags();
-                    RunCheckpoint {
+                    RunCheckpoint::<D> {
                         format,
                         version,
                         geometry,
@@ -281,8 +279,8 @@ impl Job<'_> {
                 }
             } else if steps.is_multiple_of(history_every) {
                 let r = sim.with_free_flight(|sim| -> Result<HistoryRow, RunError> {
-                    let a = Arrays::of(sim, copies);
-                    Ok(row(
+                    let a = Arrays::of::<D>(sim, copies);
+                    Ok(row::<D>(
                         sim,
                         copies,
                         &measurer.beta(&a)?,
@@ -300,7 +298,7 @@ impl Job<'_> {
         history.flush()?;
         finish::summarise(
             self,
-            Stepped {
+            Stepped::<D> {
                 sim,
                 bodies,
                 measurer,
@@ -343,14 +341,14 @@ impl Default for CraterReading {
 /// A history row of the current state (totals of the whole bodies) after the step
 /// `step` (`None` at t = 0).
 fn row<D: SceneDimension>(
-    sim: &Simulation<D, KernelChoice>,
+    sim: &SimOf<D>,
     copies: f64,
     beta: &BetaMeasure,
     crater: CraterReading,
     step: Option<&StepInfo>,
     crater_measured: bool,
 ) -> HistoryRow {
-    let c = Totals::of(sim, copies);
+    let c = Totals::of::<D>(sim, copies);
     HistoryRow {
         t: sim.state.time,
         step: sim.state.step,

@@ -7,7 +7,7 @@ use crate::run::error::RunError;
 use crate::run::history::beta_change_last_half;
 use crate::run::plots;
 use crate::run::summary::{BodyDamageSummary, RunSummary, Totals};
-use crate::scene::SceneDimension;
+use crate::scene::{GeometryKind, SceneDimension};
 use sph_diagnostics::{
     FULLY_DAMAGED, damage_stats, ejecta_distribution, energy_histogram, phase_fractions,
     uniform_edges,
@@ -33,7 +33,7 @@ pub(crate) fn summarise<D: SceneDimension>(
     } = run;
     let (dir, setup) = (job.dir, &measurer.setup);
     let n = sim.state.particles.len();
-    let a = Arrays::of(&sim, job.scene.symmetry_copies());
+    let a = Arrays::of::<D>(&sim, job.scene.symmetry_copies());
     let view = a.view();
     let beta = measurer.beta(&a)?;
     let final_crater = measurer.crater(&a)?;
@@ -99,14 +99,23 @@ pub(crate) fn summarise<D: SceneDimension>(
     plots::ejecta(&ejecta_bins, &plot("ejecta.png"))?;
     plots::projectile_energy(&e_hist, thermal.as_ref(), &plot("projectile_energy.png"))?;
 
-    let last = Totals::of(&sim, job.scene.symmetry_copies());
+    let last = Totals::of::<D>(&sim, job.scene.symmetry_copies());
     let c = final_crater.unwrap_or_default();
     let active = |x: f64| if measurer.active() { x } else { f64::NAN };
+    // A 1-D target has no lateral extent: its crater is a depth alone.
+    let lateral = |x: f64| {
+        if job.scene.geometry == GeometryKind::Line {
+            f64::NAN
+        } else {
+            active(x)
+        }
+    };
     let mut summary = RunSummary {
         geometry: job.scene.geometry,
-        crater_diameter_m: active(c.diameter),
-        crater_diameter_removed_m: active(c.diameter_removed),
-        bowl_diameter_m: active(c.bowl_diameter),
+        totals_per: job.scene.geometry.per(),
+        crater_diameter_m: lateral(c.diameter),
+        crater_diameter_removed_m: lateral(c.diameter_removed),
+        bowl_diameter_m: lateral(c.bowl_diameter),
         crater_depth_m: active(c.depth),
         crater_axis_depth_m: axis_depth,
         crater_axis_kernel_width_m: active(setup.axis_kernel_width),

@@ -120,6 +120,8 @@ impl Measurer {
         match self.geometry {
             GeometryKind::ThreeD | GeometryKind::ThreeDQuarter => Geometry::ThreeD,
             GeometryKind::Rz => Geometry::Axisymmetric,
+            GeometryKind::Plane => Geometry::Plane,
+            GeometryKind::Line => Geometry::Line,
         }
     }
 

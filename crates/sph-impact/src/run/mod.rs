@@ -34,7 +34,7 @@ pub use error::RunError;
 pub use history::{HISTORY_COLUMNS, HistoryRow, beta_change_last_half};
 pub use summary::{BodyDamageSummary, RunSummary, Totals};
 
-use crate::scene::{Built, Scene, SceneSimulation};
+use crate::scene::{Built, In3d, InLine, InPlane, InRz, Scene, SceneSimulation};
 use std::path::Path;
 use std::time::Instant;
 
@@ -126,7 +126,9 @@ fn run_in_pool(
         wall,
     };
     match simulation {
-        SceneSimulation::ThreeD(sim) => job.run(sim, bodies),
-        SceneSimulation::Rz(sim) => job.run(sim, bodies),
+        SceneSimulation::ThreeD(sim) => job.run::<In3d>(sim, bodies),
+        SceneSimulation::Rz(sim) => job.run::<InRz>(sim, bodies),
+        SceneSimulation::Plane(sim) => job.run::<InPlane>(sim, bodies),
+        SceneSimulation::Line(sim) => job.run::<InLine>(sim, bodies),
     }
 }

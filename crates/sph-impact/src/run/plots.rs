@@ -42,6 +42,7 @@ pub(crate) fn cross_section(
     let d: Vec<f64> = sel.iter().map(|&i| a.damage[i]).collect();
     let mut fig = Figure::new(1200, 900);
     let rz = geometry == GeometryKind::Rz;
+    // Plane-strain and 1-D particles all lie in y = 0: the selection keeps every one.
     // Frame the target: a few fast ejecta far above it would otherwise shrink the crater
     // to a corner. The frame spans what lies below the original surface, with half its
     // width of room above; what it leaves out is counted in the title.
@@ -54,6 +55,10 @@ pub(crate) fn cross_section(
     });
     let what = if rz {
         "RZ half-plane (every ring), coloured by damage D"
+    } else if geometry == GeometryKind::Plane {
+        "Plane-strain section y = 0 (every particle), coloured by damage D"
+    } else if geometry == GeometryKind::Line {
+        "1-D column on the z axis (every particle), coloured by damage D"
     } else {
         "Cross-section |y| < particle spacing, coloured by damage D"
     };

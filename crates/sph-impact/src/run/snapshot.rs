@@ -1,12 +1,10 @@
 //! ParaView output: `snapshots/NNNNN.vtu` per snapshot and `run.pvd` listing them with
 //! their times (docs/scenes.md lists the arrays).
 
-use crate::Simulation;
 use crate::run::arrays::Arrays;
 use crate::run::error::RunError;
-use crate::scene::SceneDimension;
+use crate::scene::{SceneDimension, SimOf};
 use sph_diagnostics::{Pvd, VtuWriter};
-use sph_kernel::KernelChoice;
 use std::path::Path;
 
 /// Writes snapshot number `index` of `sim` into `dir/snapshots/` and rewrites
@@ -15,7 +13,7 @@ use std::path::Path;
 /// (r, 0, z) with (v_r, 0, v_z), its deviatoric stress in (r, θ, z) components and its
 /// whole mass.
 pub(crate) fn write_snapshot<D: SceneDimension>(
-    sim: &Simulation<D, KernelChoice>,
+    sim: &SimOf<D>,
     arrays: &Arrays,
     pressure: &[f64],
     dir: &Path,

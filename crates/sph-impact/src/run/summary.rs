@@ -1,14 +1,13 @@
 //! `summary.json`: the final diagnostics and the run's cost, with the scene as parsed.
 
 use crate::run::measure::BetaMeasure;
-use crate::scene::{BodyInfo, GeometryKind, SceneDimension};
-use crate::{DamageEvents, PhaseTimes, SchemeConfig, Simulation};
+use crate::scene::{BodyInfo, GeometryKind, SceneDimension, SimOf};
+use crate::{DamageEvents, PhaseTimes, SchemeConfig};
 use serde::Serialize;
 use sph_diagnostics::{BodyDamage, EjectaBin, PhaseFractions};
-use sph_kernel::KernelChoice;
 
 /// Mass, momentum and energy totals of the whole bodies (in RZ 2π × the solver's totals
-/// per radian; momentum in the scene's frame, (p_r, 0, p_z) in RZ, where p_r is the sum of
+/// per radian; per metre of depth in plane strain, per square metre in 1-D; momentum in the scene's frame, (p_r, 0, p_z) in RZ, where p_r is the sum of
 /// the rings' radial momenta, not a net momentum).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize)]
 pub struct Totals {
@@ -26,7 +25,7 @@ impl Totals {
     /// The totals of a simulation's current state, of the whole bodies: the modelled
     /// part's times `copies` (4 for a 3-D quarter model, else 1) and the dimension's
     /// factor. With copies > 1 the x and y momenta are zero by symmetry.
-    pub(crate) fn of<D: SceneDimension>(sim: &Simulation<D, KernelChoice>, copies: f64) -> Self {
+    pub(crate) fn of<D: SceneDimension>(sim: &SimOf<D>, copies: f64) -> Self {
         let c = sim.conserved();
         let f = D::BODY_FACTOR * copies;
         let mut momentum = D::to_scene(c.momentum).map(|p| f * p);
@@ -77,8 +76,12 @@ impl BodyDamageSummary {
 /// Everything `summary.json` holds (SI units; NaN is written as null).
 #[derive(Clone, Debug, Serialize)]
 pub struct RunSummary {
-    /// `"3d"`, `"3d-quarter"` or `"rz"`.
+    /// `"3d"`, `"3d-quarter"`, `"rz"`, `"plane"` or `"1d"`.
     pub geometry: GeometryKind,
+    /// What every mass, momentum and energy (and the ejecta masses) is of: `"body"` (the
+    /// whole bodies), `"m of depth"` (plane strain: kg/m, J/m) or `"m² of area"` (1-D:
+    /// kg/m², J/m²). β, speeds and lengths are the same in every geometry.
+    pub totals_per: &'static str,
     /// Crater diameter including the spall zone (m).
     pub crater_diameter_m: f64,
     /// Diameter of the removed material alone, spall still in place counting as

@@ -1,4 +1,5 @@
-//! From a scene to a running simulation, 3-D or axisymmetric (RZ): the bodies' particles
+//! From a scene to a running simulation, 3-D, axisymmetric (RZ), plane strain or 1-D: the
+//! bodies' particles
 //! in one store (body k's particles contiguous, material id k), each body's solver
 //! material with its own Benz–Asphaug flaws, the scheme, the kernel; no boundaries (every
 //! surface is free; in RZ the solver adds the axis as a mirror) except the two symmetry
@@ -6,14 +7,14 @@
 
 use crate::materials::MaterialSpec;
 use crate::scene::Scene;
-use crate::scene::dimension::{SceneDimension, SceneSimulation};
+use crate::scene::dimension::{In3d, InLine, InPlane, InRz, SceneDimension, SceneSimulation};
 use crate::scene::error::{SceneError, SceneErrorKind};
 use crate::scene::place::PlacedBody;
 use crate::scene::settings::GeometryKind;
 use crate::solver::{Boundary, Material, Simulation};
 use serde::Serialize;
 use sph_core::glam::DVec3;
-use sph_core::{Dim2, Dim3, ParticleInit, Particles};
+use sph_core::{ParticleInit, Particles};
 use std::ops::Range;
 
 /// What a body became in the simulation.
@@ -31,7 +32,8 @@ pub struct BodyInfo {
     pub material_name: String,
     /// Number of particles.
     pub particles: usize,
-    /// The body's mass (kg): Σ m of its particles, 2π Σ m in RZ.
+    /// The body's mass (kg): Σ m of its particles, 2π Σ m in RZ; per metre of depth
+    /// (kg/m) in plane strain, per square metre (kg/m²) in 1-D.
     pub mass: f64,
     /// ρ·V of its shape (kg), when the volume is known exactly.
     pub exact_mass: Option<f64>,
@@ -88,9 +90,9 @@ impl Scene {
             ));
         }
         let (simulation, bodies) = match self.geometry {
-            GeometryKind::ThreeD => self.assemble::<Dim3>(&placed, Vec::new())?,
+            GeometryKind::ThreeD => self.assemble::<In3d>(&placed, Vec::new())?,
             // The quarter x > 0, y > 0: the planes x = 0 and y = 0 are mirrors.
-            GeometryKind::ThreeDQuarter => self.assemble::<Dim3>(
+            GeometryKind::ThreeDQuarter => self.assemble::<In3d>(
                 &placed,
                 [DVec3::X, DVec3::Y]
                     .map(|normal| Boundary::Wall {
@@ -99,30 +101,32 @@ impl Scene {
                     })
                     .to_vec(),
             )?,
-            GeometryKind::Rz => self.assemble::<Dim2>(&placed, Vec::new())?,
+            GeometryKind::Rz => self.assemble::<InRz>(&placed, Vec::new())?,
+            GeometryKind::Plane => self.assemble::<InPlane>(&placed, Vec::new())?,
+            GeometryKind::Line => self.assemble::<InLine>(&placed, Vec::new())?,
         };
         Ok(Built { simulation, bodies })
     }
 
-    /// The simulation of the placed bodies in dimension `D`: in RZ the (r, z) particles
+    /// The simulation of the placed bodies in geometry `G`: in RZ the (r, z) particles
     /// with their masses per radian and the axisymmetric scheme.
-    fn assemble<D: SceneDimension>(
+    fn assemble<G: SceneDimension>(
         &self,
         placed: &[PlacedBody],
-        boundaries: Vec<Boundary<D>>,
+        boundaries: Vec<Boundary<G::Dim>>,
     ) -> Result<(SceneSimulation, Vec<BodyInfo>), SceneError> {
         let scheme = self.scheme();
-        debug_assert_eq!(scheme.geometry, D::GEOMETRY);
-        let mut particles = Particles::<D>::new();
+        debug_assert_eq!(scheme.geometry, G::GEOMETRY);
+        let mut particles = Particles::<G::Dim>::new();
         let mut spacing0 = Vec::new();
         let mut materials: Vec<Material> = Vec::with_capacity(placed.len());
         let mut bodies = Vec::with_capacity(placed.len());
         for (k, body) in placed.iter().enumerate() {
             bodies.push(BodyInfo::of(body, particles.len()));
             let p =
-                D::placed(&body.particles).expect("the bodies are placed in the scene's geometry");
+                G::placed(&body.particles).expect("the bodies are placed in the scene's geometry");
             let rho = body.material.density;
-            let velocity = D::from_scene(body.velocity);
+            let velocity = G::from_scene(body.velocity);
             for i in 0..p.len() {
                 particles.push(ParticleInit {
                     position: p.positions[i],
@@ -148,7 +152,7 @@ impl Scene {
                 .material
                 .body_material(
                     &volumes,
-                    (seed, D::stands_for(p)),
+                    (seed, G::stands_for(p)),
                     sph_damage::DamageVariable::CubeRoot,
                 )
                 .map_err(|e| {
@@ -176,6 +180,6 @@ impl Scene {
                 SceneErrorKind::Solver(e.to_string()),
             ))
         })?;
-        Ok((D::wrap(simulation), bodies))
+        Ok((G::wrap(simulation), bodies))
     }
 }

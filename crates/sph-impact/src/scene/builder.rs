@@ -70,6 +70,18 @@ use crate::scene::solver_settings::SolverSettings;
 /// assert!(sim.state.particles.position.iter().all(|x| x.x > 0.0));
 /// // Body masses are the whole rings', 2π × Σ(mass per radian): within 1 % of ρV.
 /// assert!(rz.bodies.iter().all(|b| b.mass_error().unwrap().abs() < 0.01));
+///
+/// // The first scene in plane strain and in 1-D: the sections y = 0 and x = y = 0 of the
+/// // same bodies, masses per metre of depth and per square metre.
+/// let mut plane = scene.clone();
+/// plane.geometry = GeometryKind::Plane;
+/// let plane = plane.build()?;
+/// assert!(plane.simulation.plane().unwrap().state.particles.len() > 0);
+/// let block = &plane.bodies[1]; // its section is 8 mm × 4 mm: ρ × 3.2e-5 m² exactly
+/// assert!(block.mass_error().unwrap().abs() < 1e-12);
+/// let mut line = scene.clone();
+/// line.geometry = GeometryKind::Line;
+/// assert_eq!(line.build()?.simulation.line().unwrap().state.particles.len(), 4 + 8);
 /// # Ok::<(), sph_impact::scene::SceneError>(())
 /// ```
 #[derive(Clone, Debug)]

@@ -1,6 +1,6 @@
 //! The checks a scene passes before anything is placed: end time, bodies (names, shapes,
 //! placements, velocities, materials; in an RZ scene also their symmetry about the z
-//! axis), solver settings, output and diagnostics settings. Overlapping bodies need the
+//! axis, in a plane or 1-D scene their section), solver settings, output and diagnostics settings. Overlapping bodies need the
 //! particles and are found when the bodies are placed ([`Scene::place`]).
 
 use crate::materials::MaterialSpec;
@@ -47,7 +47,9 @@ impl Scene {
                     ),
                 ));
             }
-            if matches!(
+            if self.geometry.is_section() {
+                b.check_section(i, self.geometry)?;
+            } else if matches!(
                 self.geometry,
                 GeometryKind::Rz | GeometryKind::ThreeDQuarter
             ) {

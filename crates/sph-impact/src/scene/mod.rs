@@ -6,7 +6,9 @@
 //! ([`Scene::from_toml_str`], [`Scene::from_toml_file`]; every table rejects unknown
 //! keys and every error is one line naming file, line, column, body and key) or built in
 //! Rust ([`SceneBuilder`]); [`Scene::build`] turns it into a [`crate::Simulation`]: 3-D,
-//! or with `geometry = "rz"` an axisymmetric one on (r, z) particles ([`SceneSimulation`]).
+//! or with `geometry = "rz"` an axisymmetric one on (r, z) particles, with `"plane"` a
+//! plane-strain one on (x, z) particles, with `"1d"` a uniaxial-strain one on z
+//! particles ([`SceneSimulation`]).
 //! The format is documented key by key in `docs/scenes.md`.
 //!
 //! ```
@@ -46,6 +48,7 @@ mod material_ref;
 mod place;
 mod read;
 mod roles;
+mod section;
 mod settings;
 mod solver_settings;
 mod spans;
@@ -53,13 +56,13 @@ mod spans;
 pub use body::{BodySpec, PlacementSpec, ShapeSpec};
 pub use build::{BodyInfo, Built};
 pub use builder::SceneBuilder;
-pub(crate) use dimension::SceneDimension;
 pub use dimension::SceneSimulation;
+pub(crate) use dimension::{In3d, InLine, InPlane, InRz, SceneDimension, SimOf};
 pub use error::{SceneError, SceneErrorKind};
 pub(crate) use estimate::human_seconds as estimate_human_seconds;
 pub use estimate::{
     ASSUMED_BYTES_PER_PARTICLE, ASSUMED_EVALUATIONS_PER_CORE_FLUID,
-    ASSUMED_EVALUATIONS_PER_CORE_SOLID, BodyReport, CheckReport, RZ_RATE_FACTOR,
+    ASSUMED_EVALUATIONS_PER_CORE_SOLID, BodyReport, CheckReport, LINE_RATE_FACTOR, RZ_RATE_FACTOR,
 };
 pub use material_ref::MaterialRef;
 pub use place::{PlacedBody, PlacedParticles};
@@ -86,8 +89,9 @@ pub struct Scene {
     /// Free text describing the scene.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub description: Option<String>,
-    /// `"3d"` (default), `"3d-quarter"` (3-D, a quarter between symmetry planes) or
-    /// `"rz"` (axisymmetric about z).
+    /// `"3d"` (default), `"3d-quarter"` (3-D, a quarter between symmetry planes),
+    /// `"rz"` (axisymmetric about z), `"plane"` (plane strain, the section y = 0) or
+    /// `"1d"` (uniaxial strain, the section on the z axis).
     #[serde(default)]
     pub geometry: GeometryKind,
     /// Simulated time to run (s), > 0.
@@ -118,7 +122,10 @@ impl Scene {
     pub fn scheme(&self) -> crate::SchemeConfig {
         let mut s = self.solver.scheme();
         s.geometry = match self.geometry {
-            GeometryKind::ThreeD | GeometryKind::ThreeDQuarter => crate::Geometry::Cartesian,
+            GeometryKind::ThreeD
+            | GeometryKind::ThreeDQuarter
+            | GeometryKind::Plane
+            | GeometryKind::Line => crate::Geometry::Cartesian,
             GeometryKind::Rz => crate::Geometry::Axisymmetric,
         };
         s
@@ -130,7 +137,7 @@ impl Scene {
     pub fn symmetry_copies(&self) -> f64 {
         match self.geometry {
             GeometryKind::ThreeDQuarter => 4.0,
-            GeometryKind::ThreeD | GeometryKind::Rz => 1.0,
+            _ => 1.0,
         }
     }
 

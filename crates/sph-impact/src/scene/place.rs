@@ -1,5 +1,6 @@
-//! Filling each body with particles — in 3-D, or in the (r, z) half-plane for an
-//! axisymmetric (RZ) scene — and the overlap check: no particle of one body may lie
+//! Filling each body with particles — in 3-D, in the (r, z) half-plane for an
+//! axisymmetric (RZ) scene, in the section y = 0 for a plane-strain scene or on the z axis
+//! for a 1-D one — and the overlap check: no particle of one body may lie
 //! inside another body's shape (two bodies in one place would double the mass there,
 //! and their pair forces start from an unphysical compression).
 
@@ -11,8 +12,8 @@ use crate::scene::settings::GeometryKind;
 use rayon::prelude::*;
 use sph_core::glam::{DVec2, DVec3};
 use sph_geometry::{
-    BodyParticles, FibonacciPlacement, GeometryError, RzLayeredPlacement, Shape, cubic_lattice,
-    revolve, rz_lattice,
+    BodyParticles, FibonacciPlacement, GeometryError, LineSection, PlaneSection,
+    RzLayeredPlacement, Shape, cubic_lattice, revolve, rz_lattice,
 };
 use std::f64::consts::TAU;
 
@@ -27,25 +28,40 @@ pub enum PlacedParticles {
     /// 3-D quarter model: the particles with x > 0, y > 0 of a body placed as rings
     /// (masses in kg; the body is 4 times them).
     Quarter(BodyParticles<DVec3>),
+    /// Plane strain: positions (x, z) in the section y = 0 (m), masses per metre of depth
+    /// (kg/m), spacings (m).
+    Plane(BodyParticles<DVec2>),
+    /// 1-D: positions z on the axis (m), masses per square metre (kg/m²), spacings (m).
+    Line(BodyParticles<f64>),
+}
+
+/// `$body` with `$p` bound to the particles, whatever their dimension.
+macro_rules! each {
+    ($particles:expr, $p:ident => $body:expr) => {
+        match $particles {
+            PlacedParticles::ThreeD($p) | PlacedParticles::Quarter($p) => $body,
+            PlacedParticles::Rz($p) | PlacedParticles::Plane($p) => $body,
+            PlacedParticles::Line($p) => $body,
+        }
+    };
 }
 
 impl PlacedParticles {
     /// Number of particles.
     pub fn len(&self) -> usize {
-        match self {
-            Self::ThreeD(p) | Self::Quarter(p) => p.len(),
-            Self::Rz(p) => p.len(),
-        }
+        each!(self, p => p.len())
     }
 
     /// The number of 3-D particles the body's particles stand for, over which its
     /// Benz–Asphaug flaws are dealt (`SceneDimension::stands_for`): its own count in 3-D
-    /// and for a quarter, Σ round(2πr/Δ) over the rings in RZ.
+    /// and for a quarter, in plane strain and 1-D, Σ round(2πr/Δ) over the rings in RZ.
     pub fn stands_for(&self) -> usize {
-        use crate::scene::dimension::SceneDimension;
+        use crate::scene::dimension::{In3d, InLine, InPlane, InRz, SceneDimension};
         match self {
-            Self::ThreeD(p) | Self::Quarter(p) => sph_core::Dim3::stands_for(p),
-            Self::Rz(p) => sph_core::Dim2::stands_for(p),
+            Self::ThreeD(p) | Self::Quarter(p) => In3d::stands_for(p),
+            Self::Rz(p) => InRz::stands_for(p),
+            Self::Plane(p) => InPlane::stands_for(p),
+            Self::Line(p) => InLine::stands_for(p),
         }
     }
 
@@ -54,44 +70,45 @@ impl PlacedParticles {
         self.len() == 0
     }
 
-    /// The body's mass (kg): Σ m in 3-D, 2π Σ m in RZ, 4 Σ m for a quarter.
+    /// The body's mass: Σ m in 3-D (kg), 2π Σ m in RZ (kg), 4 Σ m for a quarter (kg);
+    /// Σ m per metre of depth in plane strain (kg/m), per square metre in 1-D (kg/m²).
     pub fn body_mass(&self) -> f64 {
         match self {
-            Self::ThreeD(p) => p.total_mass(),
             Self::Quarter(p) => 4.0 * p.total_mass(),
             Self::Rz(p) => TAU * p.total_mass(),
+            other => each!(other, p => p.total_mass()),
         }
     }
 
     /// Each particle's spacing (m).
     pub fn spacing(&self) -> &[f64] {
-        match self {
-            Self::ThreeD(p) | Self::Quarter(p) => &p.spacing,
-            Self::Rz(p) => &p.spacing,
-        }
+        each!(self, p => &p.spacing)
     }
 
     /// Finest and coarsest spacing (m).
     pub fn spacing_range(&self) -> (f64, f64) {
-        match self {
-            Self::ThreeD(p) | Self::Quarter(p) => (p.min_spacing(), p.max_spacing()),
-            Self::Rz(p) => (p.min_spacing(), p.max_spacing()),
-        }
+        each!(self, p => (p.min_spacing(), p.max_spacing()))
     }
 
-    /// The volume each particle stands for (m³): m/ρ, the ring's 2π m/ρ in RZ.
+    /// The 3-D volume each particle stands for (m³), over which its Benz–Asphaug flaws
+    /// are counted: m/ρ in 3-D, the ring's 2π m/ρ in RZ; in plane strain and 1-D, where
+    /// a particle is a prism or plate without end, the cube of its spacing (the volume
+    /// of one 3-D particle of the same spacing, docs/scenes.md).
     pub fn volumes(&self, density: f64) -> Vec<f64> {
         match self {
             Self::ThreeD(p) | Self::Quarter(p) => p.masses.iter().map(|m| m / density).collect(),
             Self::Rz(p) => p.masses.iter().map(|m| TAU * m / density).collect(),
+            Self::Plane(_) | Self::Line(_) => self.spacing().iter().map(|d| d.powi(3)).collect(),
         }
     }
 
-    /// Particle `i` as a 3-D point: itself, or (r, 0, z) in RZ.
+    /// Particle `i` as a 3-D point: itself, (r, 0, z) in RZ, (x, 0, z) in plane strain,
+    /// (0, 0, z) in 1-D.
     pub fn point(&self, i: usize) -> DVec3 {
         match self {
             Self::ThreeD(p) | Self::Quarter(p) => p.positions[i],
-            Self::Rz(p) => DVec3::new(p.positions[i].x, 0.0, p.positions[i].y),
+            Self::Rz(p) | Self::Plane(p) => DVec3::new(p.positions[i].x, 0.0, p.positions[i].y),
+            Self::Line(p) => DVec3::new(0.0, 0.0, p.positions[i]),
         }
     }
 }
@@ -105,20 +122,50 @@ pub struct PlacedBody {
     pub material: MaterialSpec,
     /// Its particles.
     pub particles: PlacedParticles,
-    /// ρ·V of its shape (kg), when the shape's volume is known exactly.
+    /// ρ·V of its shape (kg), when the shape's volume is known exactly; in plane strain
+    /// and 1-D ρ × its section's area (kg/m) or length (kg/m²).
     pub exact_mass: Option<f64>,
     /// Initial velocity (m/s).
     pub velocity: DVec3,
 }
 
-/// Fills `shape` as `placement` says, in `geometry`.
+/// Fills `shape` as `placement` says, in `geometry`; `section` is the measure of a plane
+/// or 1-D section when known (its area or length).
 fn fill(
     shape: &dyn Shape<DVec3>,
     placement: PlacementSpec,
     rho: f64,
     geometry: GeometryKind,
+    section: Option<f64>,
 ) -> Result<PlacedParticles, GeometryError> {
     Ok(match (geometry, placement) {
+        (GeometryKind::Plane, PlacementSpec::Lattice { spacing }) => {
+            let mut plane = PlaneSection::new(shape);
+            if let Some(area) = section {
+                plane = plane.with_measure(area);
+            }
+            PlacedParticles::Plane(cubic_lattice(&plane, spacing, rho)?)
+        }
+        (GeometryKind::Line, PlacementSpec::Lattice { spacing }) => {
+            let mut line = LineSection::new(shape);
+            if let Some(length) = section {
+                line = line.with_measure(length);
+            }
+            PlacedParticles::Line(cubic_lattice(&line, spacing, rho)?)
+        }
+        // `Scene::check` allows only lattices in plane and 1-D scenes.
+        (
+            GeometryKind::Plane | GeometryKind::Line,
+            PlacementSpec::Variable { .. } | PlacementSpec::Rings { .. },
+        ) => {
+            return Err(GeometryError::EmptyPlacement {
+                body: shape.describe(),
+                reason: format!(
+                    "geometry = \"{}\" needs placement kind \"lattice\"",
+                    geometry.name()
+                ),
+            });
+        }
         (GeometryKind::ThreeD, PlacementSpec::Lattice { spacing }) => {
             PlacedParticles::ThreeD(cubic_lattice(shape, spacing, rho)?)
         }
@@ -204,16 +251,23 @@ impl Scene {
             let geometry = |e: sph_geometry::GeometryError| {
                 err("placement", SceneErrorKind::Geometry(e.to_string()))
             };
+            let section = b.shape.section_measure(self.geometry);
             let particles = fill(
                 shape.as_ref(),
                 b.placement.refined(resolution_scale),
                 rho,
                 self.geometry,
+                section,
             )
             .map_err(geometry)?;
+            let measure = if self.geometry.is_section() {
+                section
+            } else {
+                shape.volume()
+            };
             placed.push(PlacedBody {
                 name: b.name.clone(),
-                exact_mass: shape.volume().map(|v| rho * v),
+                exact_mass: measure.map(|v| rho * v),
                 material,
                 particles,
                 velocity: DVec3::from_array(b.velocity),

@@ -2,7 +2,9 @@
 
 use serde::{Deserialize, Serialize};
 
-/// The run's geometry (serialised as `"3d"`, `"3d-quarter"` or `"rz"`).
+/// The run's geometry (serialised as `"3d"`, `"3d-quarter"`, `"rz"`, `"plane"` or
+/// `"1d"`). The bodies are always written in 3-D; the lower-dimensional geometries run a
+/// section of them, and the outputs keep the 3-D convention (docs/scenes.md).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
 pub enum GeometryKind {
     /// Full 3-D.
@@ -20,6 +22,54 @@ pub enum GeometryKind {
     /// it; the run has 2-D particles in the (r, z) half-plane, each a ring.
     #[serde(rename = "rz")]
     Rz,
+    /// Plane strain: the bodies' section y = 0 extruded without end along y; the run has
+    /// 2-D particles in (x, z), masses and totals per metre of depth (kg/m). Velocities
+    /// have v_y = 0.
+    #[serde(rename = "plane")]
+    Plane,
+    /// Uniaxial strain (1-D): the bodies' section on the z axis (x = y = 0) extruded
+    /// without end in x and y, plates moving along z; the run has 1-D particles in z,
+    /// masses and totals per square metre (kg/m²). Velocities have v_x = v_y = 0.
+    #[serde(rename = "1d")]
+    Line,
+}
+
+impl GeometryKind {
+    /// The name the scene file uses.
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::ThreeD => "3d",
+            Self::ThreeDQuarter => "3d-quarter",
+            Self::Rz => "rz",
+            Self::Plane => "plane",
+            Self::Line => "1d",
+        }
+    }
+
+    /// The bodies' measure each output total is per: "body" (3-D, quarter, RZ — the
+    /// whole bodies), "m of depth" (plane) or "m² of area" (1-D).
+    pub fn per(self) -> &'static str {
+        match self {
+            Self::ThreeD | Self::ThreeDQuarter | Self::Rz => "body",
+            Self::Plane => "m of depth",
+            Self::Line => "m² of area",
+        }
+    }
+
+    /// The unit of the outputs' masses: kg, kg/m (plane strain) or kg/m² (1-D).
+    pub fn mass_unit(self) -> &'static str {
+        match self {
+            Self::ThreeD | Self::ThreeDQuarter | Self::Rz => "kg",
+            Self::Plane => "kg/m",
+            Self::Line => "kg/m²",
+        }
+    }
+
+    /// True for the sections (plane and 1-D), whose bodies are infinite and whose masses
+    /// and totals are per unit depth or area.
+    pub fn is_section(self) -> bool {
+        matches!(self, Self::Plane | Self::Line)
+    }
 }
 
 /// `[output]`: what a run writes and how often.
