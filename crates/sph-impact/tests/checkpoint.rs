@@ -1,6 +1,6 @@
 //! Checkpoints: a run resumed from its checkpoint writes what the uninterrupted run
 //! writes, to the bit (history, snapshots, collection, summary physics), in RZ with
-//! particles in free flight and in 3-D, on another thread count, and when extended to a
+//! particles in free flight, in 3-D, in plane strain and in 1-D, on another thread count, and when extended to a
 //! later end time; a checkpoint that does not fit is refused with a one-line reason.
 //!
 //! `cargo test -p sph-impact --test checkpoint -- --nocapture` prints the refusals.
@@ -128,6 +128,32 @@ fn a_resumed_3d_run_repeats_the_uninterrupted_one_bit_for_bit() {
     assert_eq!(b.resumed_from_s.len(), 1);
     // Snapshots at 0, 0.25 and 0.5 µs; resumed from 0.25 µs.
     assert_same_outputs((&whole, &a), (&resumed, &b), "snapshots/00002.vtu");
+}
+
+/// In plane strain and in 1-D too (the example scenes to 0.5 µs, resumed from 0.25 µs);
+/// a 1-D checkpoint is refused for the same bodies in plane strain.
+#[test]
+fn resumed_plane_and_1d_runs_repeat_the_uninterrupted_ones_bit_for_bit() {
+    for (file, name) in [("smoke_plane.toml", "plane"), ("flyer_plate_1d.toml", "1d")] {
+        let scene = Scene::from_toml_file(scene_file(file)).unwrap();
+        let end = Some(0.5e-6);
+        let whole = fresh(&format!("checkpoint-{name}-whole"));
+        let a = run(&scene, &whole, &options(2, end, true, false)).unwrap();
+        let resumed = fresh(&format!("checkpoint-{name}-resumed"));
+        copy_dir(&whole, &resumed);
+        let b = run(&scene, &resumed, &options(1, end, false, true)).unwrap();
+        assert_eq!(b.resumed_from_s.len(), 1, "{name}");
+        assert_same_outputs((&whole, &a), (&resumed, &b), "snapshots/00002.vtu");
+        if name == "1d" {
+            let mut plane = scene.clone();
+            plane.geometry = sph_impact::scene::GeometryKind::Plane;
+            let message = refused(&plane, &resumed, &options(1, end, false, true));
+            assert!(
+                message.contains("geometry = \"1d\" run") && message.contains("\"plane\""),
+                "{message}"
+            );
+        }
+    }
 }
 
 /// The one-line message of a refused resume, printed.

@@ -70,6 +70,16 @@ pub(crate) struct RunCheckpoint<D: SceneDimension> {
     pub solver: SolverCheckpoint<D::Dim>,
 }
 
+/// The scene's name of a checkpoint's geometry tag (the `GeometryKind` in Debug form,
+/// kept so that checkpoints of earlier versions still read; "3d" for a quarter model's).
+fn geometry_name(tag: &str) -> String {
+    use crate::scene::GeometryKind::*;
+    [ThreeD, Rz, Plane, Line]
+        .into_iter()
+        .find(|g| format!("{g:?}") == tag)
+        .map_or_else(|| tag.to_owned(), |g| g.name().to_owned())
+}
+
 impl<D: SceneDimension> RunCheckpoint<D> {
     /// The scene in the form stored and compared.
     pub fn scene_text(scene: &Scene) -> Result<String, RunError> {
@@ -131,8 +141,9 @@ impl<D: SceneDimension> RunCheckpoint<D> {
         }
         if header.geometry != geometry {
             return Err(refuse(format!(
-                "it is a {} run, the scene is {geometry}",
-                header.geometry
+                "it is a geometry = \"{}\" run, the scene's geometry is \"{}\"",
+                geometry_name(&header.geometry),
+                D::KIND.name()
             )));
         }
         let c: Self =
