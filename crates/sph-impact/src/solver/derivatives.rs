@@ -124,6 +124,14 @@ pub(crate) struct PairRates<D: Dimension> {
 /// Rows per parallel task of pass 2.
 const ROWS_PER_TASK: usize = 256;
 
+/// Whether the extended state is an RZ one (it carries each particle's radius). The gather
+/// loops are dispatched on it once per call, so that each geometry runs its own
+/// monomorphised loop: in a Cartesian instantiation the RZ weights are the constant 1 and
+/// the hoop terms are compiled out, in an RZ one nothing is tested per pair.
+fn is_rz<D: Dimension>(ext: &Extended<'_, D>) -> bool {
+    !ext.radius.is_empty()
+}
+
 /// Summation density ρ_i = m_i W(0) + Σ_j m_j W̄_ij over real particles.
 pub(crate) fn summation_density<D: Dimension, P: PairKernel<D>>(
     ext: &Extended<'_, D>,
@@ -131,7 +139,21 @@ pub(crate) fn summation_density<D: Dimension, P: PairKernel<D>>(
     pk: &P,
     rz_radius: Option<&crate::solver::axisymmetric::SmoothedRadius>,
 ) -> Vec<f64> {
-    let rz = !ext.radius.is_empty();
+    if is_rz(ext) {
+        summation_density_in::<D, P, true>(ext, list, pk, rz_radius)
+    } else {
+        summation_density_in::<D, P, false>(ext, list, pk, rz_radius)
+    }
+}
+
+/// [`summation_density`] for one geometry (`RZ`), fixed at compile time.
+fn summation_density_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
+    ext: &Extended<'_, D>,
+    list: &NeighborList,
+    pk: &P,
+    rz_radius: Option<&crate::solver::axisymmetric::SmoothedRadius>,
+) -> Vec<f64> {
+    let rz = RZ;
     (0..ext.n_real)
         .into_par_iter()
         .map(|i| {
@@ -169,7 +191,7 @@ fn viscosity_switch_factors<D: Dimension, P: PairKernel<D>>(
         sph_riemann::ViscositySwitch::None => Vec::new(),
         sph_riemann::ViscositySwitch::Balsara => {
             let gr = grads.expect("the Balsara switch runs pass 1 (need_grads)");
-            let rz = !ext.radius.is_empty();
+            let rz = is_rz(ext);
             (0..ext.n_real)
                 .into_par_iter()
                 .map(|i| {
@@ -198,7 +220,23 @@ pub(crate) fn gradients<D: Dimension, P: PairKernel<D>>(
     correct_strain: bool,
     keep_correction: bool,
 ) -> GradientSet<D> {
-    let rz = !ext.radius.is_empty();
+    let flags = (correct, correct_strain, keep_correction);
+    if is_rz(ext) {
+        gradients_in::<D, P, true>(ext, list, pk, flags)
+    } else {
+        gradients_in::<D, P, false>(ext, list, pk, flags)
+    }
+}
+
+/// [`gradients`] for one geometry (`RZ`), fixed at compile time; `flags` are
+/// (correct, correct_strain, keep_correction).
+fn gradients_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
+    ext: &Extended<'_, D>,
+    list: &NeighborList,
+    pk: &P,
+    (correct, correct_strain, keep_correction): (bool, bool, bool),
+) -> GradientSet<D> {
+    let rz = RZ;
     // The 2-D density of the pair sums: η = ρ r in RZ (ring masses per radian).
     let eta = |k: usize| {
         if rz {
@@ -293,6 +331,21 @@ pub(crate) fn rates<D: Dimension, P: PairKernel<D>>(
     grads: Option<&GradientSet<D>>,
     scheme: &SchemeConfig,
 ) -> PairRates<D> {
+    if is_rz(ext) {
+        rates_in::<D, P, true>(ext, list, pk, grads, scheme)
+    } else {
+        rates_in::<D, P, false>(ext, list, pk, grads, scheme)
+    }
+}
+
+/// [`rates`] for one geometry (`RZ`), fixed at compile time.
+fn rates_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
+    ext: &Extended<'_, D>,
+    list: &NeighborList,
+    pk: &P,
+    grads: Option<&GradientSet<D>>,
+    scheme: &SchemeConfig,
+) -> PairRates<D> {
     let visc = scheme.viscosity;
     let solid = ext.has_stress();
     let damaged = !ext.damage.is_empty();
@@ -305,7 +358,7 @@ pub(crate) fn rates<D: Dimension, P: PairKernel<D>>(
     };
     // RZ: the pair terms carry the weights r (pressure and stress r σ, density η = ρ r;
     // axisymmetric.rs); Cartesian runs have r = 1 throughout.
-    let rz = !ext.radius.is_empty();
+    let rz = RZ;
     let radius = |k: usize| if rz { ext.radius[k] } else { 1.0 };
     let smooth_r = |k: usize| if rz { ext.smoothed_radius[k] } else { 1.0 };
     // The viscosity switch's factor of each real particle (empty without a switch); a
