@@ -132,6 +132,17 @@ fn is_rz<D: Dimension>(ext: &Extended<'_, D>) -> bool {
     !ext.radius.is_empty()
 }
 
+/// Calls `f::<D, P, RZ>(ext, args…)` with `RZ` the geometry of `ext` ([`is_rz`]).
+macro_rules! per_geometry {
+    ($f:ident($ext:expr $(, $arg:expr)*)) => {
+        if is_rz($ext) {
+            $f::<D, P, true>($ext $(, $arg)*)
+        } else {
+            $f::<D, P, false>($ext $(, $arg)*)
+        }
+    };
+}
+
 /// Summation density ρ_i = m_i W(0) + Σ_j m_j W̄_ij over real particles.
 pub(crate) fn summation_density<D: Dimension, P: PairKernel<D>>(
     ext: &Extended<'_, D>,
@@ -139,11 +150,7 @@ pub(crate) fn summation_density<D: Dimension, P: PairKernel<D>>(
     pk: &P,
     rz_radius: Option<&crate::solver::axisymmetric::SmoothedRadius>,
 ) -> Vec<f64> {
-    if is_rz(ext) {
-        summation_density_in::<D, P, true>(ext, list, pk, rz_radius)
-    } else {
-        summation_density_in::<D, P, false>(ext, list, pk, rz_radius)
-    }
+    per_geometry!(summation_density_in(ext, list, pk, rz_radius))
 }
 
 /// [`summation_density`] for one geometry (`RZ`), fixed at compile time.
@@ -220,21 +227,24 @@ pub(crate) fn gradients<D: Dimension, P: PairKernel<D>>(
     correct_strain: bool,
     keep_correction: bool,
 ) -> GradientSet<D> {
-    let flags = (correct, correct_strain, keep_correction);
-    if is_rz(ext) {
-        gradients_in::<D, P, true>(ext, list, pk, flags)
-    } else {
-        gradients_in::<D, P, false>(ext, list, pk, flags)
-    }
+    per_geometry!(gradients_in(
+        ext,
+        list,
+        pk,
+        correct,
+        correct_strain,
+        keep_correction
+    ))
 }
 
-/// [`gradients`] for one geometry (`RZ`), fixed at compile time; `flags` are
-/// (correct, correct_strain, keep_correction).
+/// [`gradients`] for one geometry (`RZ`), fixed at compile time.
 fn gradients_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
     ext: &Extended<'_, D>,
     list: &NeighborList,
     pk: &P,
-    (correct, correct_strain, keep_correction): (bool, bool, bool),
+    correct: bool,
+    correct_strain: bool,
+    keep_correction: bool,
 ) -> GradientSet<D> {
     let rz = RZ;
     // The 2-D density of the pair sums: η = ρ r in RZ (ring masses per radian).
@@ -331,11 +341,7 @@ pub(crate) fn rates<D: Dimension, P: PairKernel<D>>(
     grads: Option<&GradientSet<D>>,
     scheme: &SchemeConfig,
 ) -> PairRates<D> {
-    if is_rz(ext) {
-        rates_in::<D, P, true>(ext, list, pk, grads, scheme)
-    } else {
-        rates_in::<D, P, false>(ext, list, pk, grads, scheme)
-    }
+    per_geometry!(rates_in(ext, list, pk, grads, scheme))
 }
 
 /// [`rates`] for one geometry (`RZ`), fixed at compile time.
