@@ -5,8 +5,8 @@
 use sph_core::glam::DVec2;
 use sph_core::{Dim1, Dim2, ParticleInit, Particles};
 use sph_damage::{
-    ActivationStrain, BenzAsphaug, BenzAsphaugParams, MaxTensileStress, PlasticFailure,
-    WeibullParams,
+    ActivationStrain, BenzAsphaug, BenzAsphaugParams, DamageModel, MaxTensileStress,
+    PlasticFailure, WeibullParams,
 };
 use sph_eos::{LinearElastic, LinearElasticParams};
 use sph_impact::{Material, SchemeConfig, Simulation};
@@ -596,6 +596,167 @@ fn yield_only_coupling_passes_a_damaged_particles_whole_stress() {
         assert!((y - i).length() < 1e-6 * scale, "{y:?} {i:?}");
         assert!(a.length() > 0.01 * scale, "{a:?}");
         assert!((b - a * 2.0).length() < 1e-6 * a.length(), "{a:?} {b:?}");
+    }
+}
+
+/// FSISPH's stress coupling (`StressCoupling::Fsisph`, Spheral's solid FSISPH): the
+/// sheared block S = diag(s, −s, 0) with a fully damaged particle in the middle. Along x
+/// the pairs are in tension (r̂·(S_i + S_j)·r̂ = 2s > 0), so the crack's pairs pass no
+/// deviatoric stress from either side, as pair-max: its x neighbours feel −2S∇W. Along y
+/// they are in compression (−2s), so both stresses pass whole: the y neighbours feel only
+/// what the crack itself has lost (its von Mises yield is zero at D = 1, so the midpoint's
+/// radial return clears its S), which is the per-particle coupling's term.
+#[test]
+fn fsisph_coupling_opens_a_crack_in_tension_only() {
+    // The crack's own stress is cleared from the start, as its zero yield clears it at
+    // the midpoint, so that both RK2 stages see the same crack.
+    let scalar_crack = |sim: &mut Simulation<Dim2, WendlandC2>, k: usize| {
+        sim.state.damage_state[k] = 1.0;
+        sim.state.stress[k] = sph_core::glam::DMat3::ZERO;
+    };
+    let run = |c| sheared_block_with_a_crack(c, never_failing(), scalar_crack);
+    let (fsisph, crack_f, _) = run(sph_damage::StressCoupling::Fsisph);
+    let (particle, _, _) = run(sph_damage::StressCoupling::Particle);
+    let (pair_max, _, _) = run(sph_damage::StressCoupling::PairMax);
+    let scale = sheared_scale();
+    // near = [−y, +y, −x, +x] neighbours.
+    for k in 0..4 {
+        let (f, a, b) = (fsisph[k], particle[k], pair_max[k]);
+        println!("neighbour {k}: fsisph {f:?}, per-particle {a:?}, pair-max {b:?}");
+        let expect = if k < 2 { a } else { b };
+        assert!(expect.length() > 0.01 * scale, "{expect:?}");
+        assert!(
+            (f - expect).length() < 1e-6 * expect.length(),
+            "{f:?} {expect:?}"
+        );
+    }
+    assert!(crack_f.length() < 1e-9 * scale, "{crack_f:?}");
+}
+
+/// A uniformly damaged region keeps its stress under FSISPH's coupling (f = (1 − ΔD)² = 1
+/// for equal damage): the block uniformly at D = 0.5 (whose halved yield is still far
+/// above the stress) accelerates exactly as the intact block, where the per-particle
+/// coupling halves every stress.
+#[test]
+fn fsisph_coupling_keeps_the_stress_of_uniform_damage() {
+    let uniform = |sim: &mut Simulation<Dim2, WendlandC2>, _: usize| {
+        sim.state.damage_state.iter_mut().for_each(|d| *d = 0.5);
+    };
+    let (f, _, far_f) =
+        sheared_block_with_a_crack(sph_damage::StressCoupling::Fsisph, never_failing(), uniform);
+    let (i, _, far_i) = sheared_block_with_a_crack(
+        sph_damage::StressCoupling::Fsisph,
+        never_failing(),
+        |_, _| {},
+    );
+    for (a, b) in f.iter().zip(&i).chain([(&far_f, &far_i)]) {
+        assert_eq!(a, b);
+    }
+}
+
+/// A 1-D chain of 40 particles, all damaged to D = `damage` and stretched to 0.999 ρ0 (in
+/// tension), moving with v = a x, without held ends; the scheme decouples fractured
+/// material when `decouple` is on. Returns the simulation after one step of 1 ns.
+fn damaged_chain(a: f64, damage: f64, decouple: bool) -> Simulation<Dim1, WendlandC2> {
+    let (eos, strength) = elastic();
+    let dx = 1.0e-3;
+    let mut p = Particles::<Dim1>::new();
+    for k in 0..40 {
+        let x = (k as f64 - 19.5) * dx;
+        p.push(ParticleInit {
+            position: x,
+            velocity: a * x,
+            mass: 0.999 * RHO * dx,
+            density: 0.999 * RHO,
+            specific_energy: 0.0,
+            smoothing_length: 2.5 * dx,
+            material: 0,
+        });
+    }
+    let scheme = SchemeConfig {
+        decouple_damaged: decouple,
+        artificial_stress: ArtificialStress {
+            epsilon: 0.2,
+            exponent: 4,
+            form: ArtificialStressForm::Pressure,
+            cap: None,
+        },
+        ..Default::default()
+    };
+    let mut sim = Simulation::new(
+        p,
+        vec![Material::solid("rock", eos, strength).with_damage(never_failing())],
+        scheme,
+        WendlandC2,
+        Vec::new(),
+        None,
+    )
+    .unwrap();
+    let s = never_failing().variable().from_damage(damage);
+    sim.state.damage_state.iter_mut().for_each(|d| *d = s);
+    sim.step(1.0e-9).unwrap();
+    sim
+}
+
+/// Decoupling of fractured material (`SchemeConfig::decouple_damaged`,
+/// sph_damage::decoupling): a fully damaged chain (D = 0.95 > 0.9) in tension that is
+/// separating has no interactions left: no particle's velocity or density changes. The
+/// same chain without the rule is pulled together by its residual tension (P_D = 0.05 P),
+/// and so is a chain at D = 0.8 (not fully damaged) with the rule on. Approaching
+/// fragments still interact, exactly as without the rule. Momentum is exact in every case.
+#[test]
+fn fractured_material_separating_in_tension_decouples() {
+    let a = 100.0;
+    let v0: Vec<f64> = (0..40).map(|k| a * ((k as f64 - 19.5) * 1.0e-3)).collect();
+    let moved = |sim: &Simulation<Dim1, WendlandC2>| {
+        sim.state
+            .particles
+            .velocity
+            .iter()
+            .zip(&v0)
+            .map(|(v, v0)| (v - v0).abs())
+            .fold(0.0, f64::max)
+    };
+    // Σ m v against Σ m |v| (zero at the start by symmetry).
+    let momentum = |sim: &Simulation<Dim1, WendlandC2>| {
+        let p = &sim.state.particles;
+        let sum = |f: fn(f64) -> f64| {
+            p.velocity
+                .iter()
+                .zip(&p.mass)
+                .map(|(v, m)| f(*v) * m)
+                .sum::<f64>()
+        };
+        sum(|v| v) / sum(f64::abs)
+    };
+    let decoupled = damaged_chain(a, 0.95, true);
+    assert!(decoupled.damage().iter().all(|&d| (d - 0.95).abs() < 1e-12));
+    assert_eq!(moved(&decoupled), 0.0);
+    assert!(
+        decoupled
+            .state
+            .particles
+            .density
+            .iter()
+            .all(|&r| r == 0.999 * RHO)
+    );
+    let coupled = damaged_chain(a, 0.95, false);
+    let partly = damaged_chain(a, 0.8, true);
+    println!(
+        "largest velocity change: decoupled 0, coupled {:e}, D = 0.8 {:e} m/s",
+        moved(&coupled),
+        moved(&partly)
+    );
+    assert!(moved(&coupled) > 1.0e-6);
+    assert!(moved(&partly) > 1.0e-6);
+    // Approaching: the rule does not apply.
+    let (on, off) = (
+        damaged_chain(-a, 0.95, true),
+        damaged_chain(-a, 0.95, false),
+    );
+    assert_eq!(on.state.particles.velocity, off.state.particles.velocity);
+    for sim in [&decoupled, &coupled, &partly, &on] {
+        assert!(momentum(sim).abs() < 1e-14, "{}", momentum(sim));
     }
 }
 

@@ -155,6 +155,7 @@ fn balsara_switch_stops_shear_heating_and_keeps_compression_heating() {
         alpha: 0.0,
         beta: 0.0,
         switch: ViscositySwitch::None,
+        ..MonaghanViscosity::default()
     };
     let viscous_heating = |v: &dyn Fn(DVec2) -> DVec2, switch| {
         interior_heating(linear_flow(v, visc(switch))) - interior_heating(linear_flow(v, inviscid))

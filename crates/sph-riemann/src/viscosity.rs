@@ -24,6 +24,26 @@ pub struct MonaghanViscosity {
     /// `viscosity = { …, switch = "balsara" }`.
     #[serde(default)]
     pub switch: crate::ViscositySwitch,
+    /// Reconstruct each side's velocity to the pair midpoint with its limited velocity
+    /// gradient before Π is formed (Spheral's LimitedMonaghanGingoldViscosity,
+    /// [`crate::limited_relative_velocity`]); off: Π from v_i − v_j (the paper's §2.2).
+    #[serde(default)]
+    pub reconstruct: bool,
+    /// The sound speed c̄ in Π: each solid's longitudinal wave speed (default) or the
+    /// EOS's bulk sound speed (Spheral's, whose viscosity reads the fluid sound speed).
+    #[serde(default)]
+    pub sound_speed: ViscositySoundSpeed,
+}
+
+/// The sound speed of the viscosity's linear term (see [`MonaghanViscosity::sound_speed`]).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum ViscositySoundSpeed {
+    /// c_L = √(c² + 4G/(3ρ)) for a solid, c for a fluid (paper §2.5's signal speed).
+    #[default]
+    Longitudinal,
+    /// The EOS's bulk sound speed c (Spheral).
+    Bulk,
 }
 
 impl Default for MonaghanViscosity {
@@ -32,6 +52,8 @@ impl Default for MonaghanViscosity {
             alpha: 1.0,
             beta: 1.0,
             switch: crate::ViscositySwitch::None,
+            reconstruct: false,
+            sound_speed: ViscositySoundSpeed::Longitudinal,
         }
     }
 }

@@ -68,7 +68,9 @@ pub use model::{StrengthModel, StrengthPoint, StrengthState};
 pub use radial_return::{ReturnResult, equivalent_stress, j2, radial_return};
 pub use steinberg_guinan::{SgMeltLaw, SteinbergGuinan, SteinbergGuinanParams};
 pub use von_mises::{LinearHardening, VonMises, VonMisesParams};
-pub use weakening::{damaged_strength, frictional_weakening, multiplicative_weakening};
+pub use weakening::{
+    damaged_shear_modulus, damaged_strength, frictional_weakening, multiplicative_weakening,
+};
 
 /// Serde goes through the parameter struct: deserialising validates with `new`, and a
 /// model serialises as its parameters. One line per model instead of two impl blocks.

@@ -116,6 +116,14 @@ pub trait StrengthModel: Send + Sync + std::fmt::Debug {
     fn has_strength(&self) -> bool {
         true
     }
+    /// The damaged shear modulus G(D) = (1 − D) G(state) with D = `s.damage`
+    /// ([`crate::weakening::damaged_shear_modulus`]): one rule for every model, which the
+    /// solver uses when damage weakens the moduli (paper §3.3; Spheral's
+    /// ConstantStrength/CollinsStrength). Not meant to be overridden.
+    #[inline]
+    fn damaged_shear_modulus(&self, s: &StrengthState) -> f64 {
+        crate::weakening::damaged_shear_modulus(self.shear_modulus(s), s.damage)
+    }
     /// G and Y together. Models whose G and Y share work (Steinberg–Guinan) override it.
     #[inline]
     fn evaluate(&self, s: &StrengthState) -> StrengthPoint {

@@ -16,6 +16,15 @@
 //!
 //! D must lie in [0, 1] (see [`crate::StrengthState::validate`]); for such D both forms
 //! lie between the damaged and the intact strength.
+//!
+//! Damage also weakens the **shear modulus** (the study, paper §1.2.3: "the damage D
+//! weakens the material's strength and its shear modulus"): G(D) = (1 − D) G0
+//! ([`damaged_shear_modulus`]), the rule of LLNL Spheral's constant and Collins
+//! strength models with a zero fully-damaged modulus (src/SolidMaterial/ConstantStrength.cc,
+//! CollinsStrength.cc), which the study ran. Young's modulus E = 9KG/(3K + G) follows it,
+//! and with it the flaw-activation strain, the longitudinal wave speed and the stress
+//! rate 2G ε̇'. It is one rule for every model ([`crate::StrengthModel::damaged_shear_modulus`]),
+//! switched on by the solver (`SchemeConfig::damaged_moduli`).
 
 /// Eq. (12): `Y = Y_i (1 − D)`.
 #[inline]
@@ -46,9 +55,22 @@ pub fn frictional_weakening(
     y_d * damage + intact_yield * (1.0 - damage)
 }
 
+/// G(D) = (1 − D) G0: the shear modulus of material with damage D (module docs).
+#[inline]
+pub fn damaged_shear_modulus(intact_modulus: f64, damage: f64) -> f64 {
+    (1.0 - damage) * intact_modulus
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn damaged_modulus_is_linear_in_d() {
+        assert_eq!(damaged_shear_modulus(22.7e9, 0.0), 22.7e9);
+        assert_eq!(damaged_shear_modulus(22.7e9, 1.0), 0.0);
+        assert_eq!(damaged_shear_modulus(20.0e9, 0.25), 15.0e9);
+    }
 
     #[test]
     fn multiplicative_end_points() {

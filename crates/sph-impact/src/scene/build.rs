@@ -11,6 +11,7 @@ use crate::scene::dimension::{In3d, InLine, InPlane, InRz, SceneDimension, Scene
 use crate::scene::error::{SceneError, SceneErrorKind};
 use crate::scene::place::PlacedBody;
 use crate::scene::settings::GeometryKind;
+use crate::scene::solver_settings::FlawDealing;
 use crate::solver::{Boundary, Material, Simulation};
 use serde::Serialize;
 use sph_core::glam::DVec3;
@@ -152,7 +153,13 @@ impl Scene {
                 .material
                 .body_material(
                     &volumes,
-                    (seed, G::stands_for(p)),
+                    (
+                        seed,
+                        match self.solver.flaw_dealing() {
+                            FlawDealing::ThreeDCount => G::stands_for(p),
+                            FlawDealing::BodyCount => p.len(),
+                        },
+                    ),
                     sph_damage::DamageVariable::CubeRoot,
                 )
                 .map_err(|e| {

@@ -140,7 +140,10 @@ impl Scene {
                     b.material.damage,
                     crate::materials::DamageSpec::BenzAsphaug { .. }
                 )
-                .then(|| b.particles.stands_for()),
+                .then(|| match self.solver.flaw_dealing() {
+                    crate::scene::FlawDealing::ThreeDCount => b.particles.stands_for(),
+                    crate::scene::FlawDealing::BodyCount => b.particles.len(),
+                }),
             });
         }
         let dx = bodies

@@ -69,7 +69,8 @@ pub use place::{PlacedBody, PlacedParticles};
 pub use roles::DiagnosticSetup;
 pub use settings::{DiagnosticsSettings, GeometryKind, OutputSettings};
 pub use solver_settings::{
-    ArtificialStressSettings, SolverSettings, ViscositySettings, study_scheme,
+    ArtificialStressSettings, FlawDealing, Preset, SolverSettings, ViscositySettings,
+    fsisph_scheme, study_scheme,
 };
 pub use spans::SourceMap;
 

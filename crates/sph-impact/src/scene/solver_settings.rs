@@ -2,11 +2,15 @@
 //! optional and has the name of the `SchemeConfig` field it sets; what a scene leaves out
 //! keeps the value of [`study_scheme`].
 
-use crate::solver::{DensityForm, EnergyForm, MomentumForm, SchemeConfig, SmoothingMode};
+use crate::solver::{
+    CrackLength, DensityForm, EnergyForm, MomentumForm, SchemeConfig, SmoothingMode, YieldPressure,
+};
 use serde::{Deserialize, Serialize};
 use sph_damage::StressCoupling;
 use sph_kernel::KernelChoice;
-use sph_riemann::{ArtificialStressForm, InterfaceCoupling, Limiter, RiemannSolver};
+use sph_riemann::{
+    ArtificialStressForm, InterfaceCoupling, Limiter, RiemannSolver, ViscositySoundSpeed,
+};
 
 /// The study's scheme (paper §6): Wendland C2, n_target 2.5, λ_CFL 0.25, α_Π = β_Π = 1,
 /// artificial stress ε = 0.2, n = 4 (scalar form), the study's interface coupling; the
@@ -18,6 +22,70 @@ pub fn study_scheme() -> SchemeConfig {
     s.artificial_stress.exponent = 4;
     s.artificial_stress.form = ArtificialStressForm::Pressure;
     s
+}
+
+/// A named set of scheme choices, applied over [`study_scheme`] before the scene's own
+/// `[solver]` keys (each of which still overrides it).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Preset {
+    /// The study's published scheme as written in the paper ([`study_scheme`]).
+    #[default]
+    Study,
+    /// What the study's code, LLNL Spheral's solid FSISPH, does where the paper is silent
+    /// ([`fsisph_scheme`]; docs/scenes.md, "The FSISPH preset").
+    Fsisph,
+}
+
+/// The FSISPH preset over `base`: the choices of LLNL Spheral's solid FSISPH (Pearl,
+/// Raskin & Owen 2022; src/FSISPH/SolidFSISPHEvaluateDerivatives.cc, FSISPHHydros.py) and
+/// of the strength and damage models the study ran in it, for fractured rock:
+///
+/// | setting | value | Spheral |
+/// |---|---|---|
+/// | `damaged_moduli` | true | G(D) = (1 − D) G0 (ConstantStrength, CollinsStrength) |
+/// | `decouple_damaged` | true | decoupleDamagedMaterial (default true) |
+/// | `stress_coupling` | `fsisph` | f_Dij = (1 − ΔD)² on pairs in tension only |
+/// | `coupling` | `fsisph` | v* = f_Dij v̄ + (1 − f_Dij)(HLLC) |
+/// | `yield_pressure` | `compression` | CollinsStrength: Y at max(P, 0) |
+/// | `viscosity` | `reconstruct`, `sound-speed = "bulk"` | LimitedMonaghanGingoldViscosity with the fluid sound speed |
+/// | `viscosity_length_factor` | 1 | μ_ij from η = H r with Spheral's h, the support radius of its Wendland C2 (kernel extent 1) |
+/// | `gradient_correction`, `momentum_correction` | true | linearCorrectGradients (default true) |
+/// | `crack_length` | `support` | DamageModel::computeScalarDDDt: c_g/(extent × h) |
+///
+/// The viscosity coefficients, CFL number, artificial stress and smoothing stay the
+/// study's (α = β = 1, 0.25, ε = 0.2, n = 4); FSISPH's energy diffusion and density
+/// stabilisation terms are not implemented.
+pub fn fsisph_scheme(base: SchemeConfig) -> SchemeConfig {
+    let mut s = base;
+    s.damaged_moduli = true;
+    s.decouple_damaged = true;
+    s.stress_coupling = StressCoupling::Fsisph;
+    s.coupling = InterfaceCoupling::Fsisph;
+    s.yield_pressure = YieldPressure::Compression;
+    s.viscosity.reconstruct = true;
+    s.viscosity.sound_speed = ViscositySoundSpeed::Bulk;
+    s.viscosity_length_factor = 1.0;
+    s.gradient_correction = true;
+    s.momentum_correction = true;
+    s.crack_length = CrackLength::Support;
+    s
+}
+
+/// How a body's Benz–Asphaug flaws are dealt: over how many particles the N ln N flaws
+/// of its volume are spread (sph_damage::FlawSet::seed_dealt).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum FlawDealing {
+    /// Over the 3-D particles the body's particles stand for (in RZ ≈ 2πr/Δ per ring, so
+    /// a ring has the flaws of one particle of the equivalent 3-D run; elsewhere the
+    /// body's own count).
+    #[default]
+    #[serde(rename = "3d-count")]
+    ThreeDCount,
+    /// Over the body's own particle count (Spheral's weibullFlawDistributionBenzAsphaug
+    /// over its nodes): in RZ each ring then has the flaws of its whole ring volume.
+    BodyCount,
 }
 
 /// `[solver] viscosity = { alpha = …, beta = …, switch = "none" | "balsara" }`.
@@ -33,6 +101,13 @@ pub struct ViscositySettings {
     /// The limiter on Π: `none` (the study) or `balsara`.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub switch: Option<sph_riemann::ViscositySwitch>,
+    /// Reconstruct the velocities to the pair midpoint with a limiter (Spheral's limited
+    /// Monaghan–Gingold viscosity).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub reconstruct: Option<bool>,
+    /// The sound speed of the linear term: `longitudinal` or `bulk`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub sound_speed: Option<ViscositySoundSpeed>,
 }
 
 /// `[solver] artificial_stress = { epsilon = …, n = …, form = "pressure" | "principal", cap = … }`.
@@ -58,6 +133,9 @@ pub struct ArtificialStressSettings {
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct SolverSettings {
+    /// The scheme the other keys override: `study` (default) or `fsisph` ([`Preset`]).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub preset: Option<Preset>,
     /// Kernel: `wendland-c2`, `wendland-c4`, `wendland-c6`, `cubic-spline`.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub kernel: Option<KernelChoice>,
@@ -128,6 +206,21 @@ pub struct SolverSettings {
     /// hydrodynamics and fly on at constant velocity (`SchemeConfig::free_flight_above`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub free_flight_above: Option<f64>,
+    /// Damage weakens the shear modulus, G(D) = (1 − D) G0.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub damaged_moduli: Option<bool>,
+    /// Fractured material separating in tension does not interact.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub decouple_damaged: Option<bool>,
+    /// The pressure of the yield strength: `signed` or `compression` (max(P, 0)).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub yield_pressure: Option<YieldPressure>,
+    /// Benz–Asphaug crack-growth length: `spacing` or `support`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub crack_length: Option<CrackLength>,
+    /// How Benz–Asphaug flaws are dealt: `3d-count` (default) or `body-count`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub flaw_dealing: Option<FlawDealing>,
 }
 
 impl SolverSettings {
@@ -136,9 +229,18 @@ impl SolverSettings {
         self.apply(study_scheme())
     }
 
-    /// These settings over `base`.
+    /// How the bodies' Benz–Asphaug flaws are dealt (`flaw_dealing`, default
+    /// [`FlawDealing::ThreeDCount`]).
+    pub fn flaw_dealing(&self) -> FlawDealing {
+        self.flaw_dealing.unwrap_or_default()
+    }
+
+    /// These settings over `base`, the preset (if any) first.
     pub fn apply(&self, base: SchemeConfig) -> SchemeConfig {
-        let mut s = base;
+        let mut s = match self.preset.unwrap_or_default() {
+            Preset::Study => base,
+            Preset::Fsisph => fsisph_scheme(base),
+        };
         macro_rules! set {
             ($($f:ident),*) => {$( if let Some(v) = self.$f { s.$f = v; } )*};
         }
@@ -162,7 +264,11 @@ impl SolverSettings {
             unbonded_interfaces,
             smoothing,
             fragment_density_ratio,
-            solid_density_floor
+            solid_density_floor,
+            damaged_moduli,
+            decouple_damaged,
+            yield_pressure,
+            crack_length
         );
         if let Some(z) = self.free_flight_above {
             s.free_flight_above = Some(z);
@@ -171,6 +277,8 @@ impl SolverSettings {
             s.viscosity.alpha = v.alpha.unwrap_or(s.viscosity.alpha);
             s.viscosity.beta = v.beta.unwrap_or(s.viscosity.beta);
             s.viscosity.switch = v.switch.unwrap_or(s.viscosity.switch);
+            s.viscosity.reconstruct = v.reconstruct.unwrap_or(s.viscosity.reconstruct);
+            s.viscosity.sound_speed = v.sound_speed.unwrap_or(s.viscosity.sound_speed);
         }
         if let Some(a) = self.artificial_stress {
             s.artificial_stress.epsilon = a.epsilon.unwrap_or(s.artificial_stress.epsilon);

@@ -97,6 +97,46 @@ impl From<SmoothingModeRepr> for SmoothingMode {
     }
 }
 
+/// The pressure at which a strength model's yield strength is evaluated.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum YieldPressure {
+    /// The particle's (damaged) pressure P_D, as the model defines its tension branch
+    /// (e.g. [`sph_strength::LundborgTension`]).
+    #[default]
+    Signed,
+    /// max(P_D, 0): in tension the yield is the model's at zero pressure, e.g. the
+    /// cohesion Y0 of an intact Lundborg rock and (1 − D) Y0 damaged (LLNL Spheral's
+    /// CollinsStrength::yieldStrength, src/SolidMaterial/CollinsStrength.cc, the study's
+    /// code).
+    Compression,
+}
+
+impl YieldPressure {
+    /// The pressure the yield strength is evaluated at.
+    #[inline]
+    pub fn of(self, pressure: f64) -> f64 {
+        match self {
+            Self::Signed => pressure,
+            Self::Compression => pressure.max(0.0),
+        }
+    }
+}
+
+/// The length R_s over which a Benz–Asphaug crack grows through a particle (the growth
+/// rate is c_g/R_s).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum CrackLength {
+    /// The particle's spacing Δx = h/n_target (Benz & Asphaug's particle size).
+    #[default]
+    Spacing,
+    /// The kernel's support radius h (LLNL Spheral: DamageModel::computeScalarDDDt
+    /// divides c_g by the kernel extent times its h, src/Damage/DamageModel.cc), so cracks
+    /// take n_target times longer to cross a particle.
+    Support,
+}
+
 /// The numerical scheme.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
@@ -194,6 +234,20 @@ pub struct SchemeConfig {
     /// problems need their low densities). Each flooring of a particle in a step is
     /// counted in [`crate::Simulation::density_floor_events`].
     pub solid_density_floor: bool,
+    /// Damage weakens the shear modulus, G(D) = (1 − D) G0, for every strength model
+    /// (`StrengthModel::damaged_shear_modulus`; paper §3.3 as corrected, Spheral's
+    /// ConstantStrength/CollinsStrength): Young's modulus E(D) in the flaw-activation
+    /// strain, the longitudinal wave speed (time step, signal speeds, crack speed) and the
+    /// stress rate 2G ε̇' all follow D. Off: G stays the model's (the earlier default).
+    pub damaged_moduli: bool,
+    /// Fractured material decouples: a same-material pair that is separating, with one
+    /// side in tension past its adhesion limit and one side fully damaged (D > 0.9), does
+    /// not interact (Spheral FSISPH's decoupleDamagedMaterial; sph_damage::decoupling).
+    pub decouple_damaged: bool,
+    /// The pressure the yield strength is evaluated at ([`YieldPressure`]).
+    pub yield_pressure: YieldPressure,
+    /// The crack-growth length of Benz–Asphaug damage ([`CrackLength`]).
+    pub crack_length: CrackLength,
     /// Free flight (`None`, the default, disables): a particle above this height in the
     /// last coordinate (m; z in 3-D and RZ, y in plane 2-D), moving up and away from
     /// every wall, leaves the hydrodynamics after the step and moves on at constant
@@ -236,6 +290,10 @@ impl Default for SchemeConfig {
             fragment_density_ratio: Self::DEFAULT_FRAGMENT_DENSITY_RATIO,
             solid_density_floor: true,
             free_flight_above: None,
+            damaged_moduli: false,
+            decouple_damaged: false,
+            yield_pressure: YieldPressure::Signed,
+            crack_length: CrackLength::Spacing,
         }
     }
 }

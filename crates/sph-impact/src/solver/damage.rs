@@ -148,7 +148,7 @@ pub(crate) fn damage_rates<D: Dimension>(
             // σ_1 of the total stress σ = (1 − D) S − P_D I (S − P_D I where damage acts
             // on the yield strength only), tension positive; the stored 3×3 includes the
             // out-of-plane components of 1-D and 2-D runs.
-            let sigma = input.stress[i] * input.coupling.own_factor(d)
+            let sigma = input.stress[i] * input.coupling.activation_factor(d)
                 - sph_core::glam::DMat3::from_diagonal(sph_core::glam::DVec3::splat(
                     input.pressure[i],
                 ));

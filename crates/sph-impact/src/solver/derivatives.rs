@@ -269,7 +269,11 @@ fn gradients_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
             let dx = ext.position[j] - xi;
             let g = pk.grad(i, j, -dx);
             let vol = ext.mass[j] / eta(j);
-            l += D::Tensor::outer(ext.velocity[j] - vi, g) * vol;
+            // A decoupled pair (fractured rock separating) shares no velocity gradient;
+            // it still counts in M and ∇P, as in Spheral's FSISPH.
+            if !decoupled(ext, i, j, -dx, vi - ext.velocity[j]) {
+                l += D::Tensor::outer(ext.velocity[j] - vi, g) * vol;
+            }
             gp += g * ((ext.pressure[j] - pi) * vol);
             m += D::Tensor::outer(dx, g) * vol;
             dwdh += ext.mass[j] * pk.dw_dh_own(i, dx);
@@ -319,6 +323,39 @@ fn gradients_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
             correction: Vec::new(),
         }
     }
+}
+
+/// Whether the pair (i, j), r = x_i − x_j, v_ij = v_i − v_j, is decoupled as fractured
+/// material (`SchemeConfig::decouple_damaged`, sph_damage::decoupling): same material,
+/// separating, one side in tension past its adhesion limit and one side fully damaged
+/// (its damage projected on the pair's axis for tensor damage). False when the rule is
+/// off (no adhesion flags). Symmetric in (i, j).
+#[inline]
+fn decoupled<D: Dimension>(
+    ext: &Extended<'_, D>,
+    i: usize,
+    j: usize,
+    r: D::Vector,
+    vij: D::Vector,
+) -> bool {
+    if ext.adhesion.is_empty() || ext.material[i] != ext.material[j] {
+        return false;
+    }
+    let separating = r.dot(vij) > 0.0;
+    let (ai, aj) = (ext.adhesion[i], ext.adhesion[j]);
+    if !separating || !(ai || aj) {
+        return false;
+    }
+    let (di, dj) = if ext.damage_tensor.is_empty() {
+        (ext.damage[i], ext.damage[j])
+    } else {
+        let n = sph_core::glam::DVec3::from_array((r / r.norm()).to_array3());
+        (
+            projected_damage(&ext.damage_tensor[i], n),
+            projected_damage(&ext.damage_tensor[j], n),
+        )
+    };
+    sph_damage::decoupling::decouples(separating, ai, aj, di, dj)
 }
 
 /// M⁻¹ if M is invertible and not too far from the identity (condition number of its
@@ -425,10 +462,18 @@ fn rates_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
             let same_material = mi_mat == ext.material[j];
             let vij = vi - vj;
             out.approach = out.approach.max(-vij.dot(r_hat));
+            // Fractured rock separating in tension does not interact at all
+            // (sph_damage::decoupling); the test is symmetric, so the pair drops out of
+            // both sides' sums.
+            if decoupled(ext, i, j, r, vij) {
+                continue;
+            }
 
             // Left (j) and right (i) states along r̂, reconstructed to the midpoint.
             let (mut ui, mut uj) = (vi.dot(r_hat), vj.dot(r_hat));
             let (mut pfi, mut pfj) = (pi, pj);
+            // Both sides' velocity gradients, for the limited viscosity.
+            let mut l_pair = None;
             if let Some(gr) = grads.map(|g| &g.each) {
                 let gi = &gr[i];
                 let src = &gr[ext.source[j] as usize];
@@ -442,6 +487,7 @@ fn rates_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
                         m.mul_vec(src.pressure),
                     )
                 };
+                l_pair = Some((gi.velocity, lj));
                 let half = r * 0.5;
                 let dui = r_hat.dot(gi.velocity.mul_vec(-half));
                 let duj = r_hat.dot(lj.mul_vec(half));
@@ -485,9 +531,23 @@ fn rates_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
             let etaj = rhoj * smooth_r(j);
             let r_bar = 0.5 * (ri + rj);
             let h_bar = scheme.viscosity_length_factor * 0.5 * (pk.h(i) + pk.h(j));
+            // The viscosity's relative velocity: v_i − v_j, or each side reconstructed to
+            // the midpoint with its limited gradient (Spheral's limited viscosity).
+            let v_visc = match l_pair {
+                Some((li, lj)) if visc.reconstruct => {
+                    let dx_pair = pk.h(i).max(pk.h(j)) / scheme.n_target;
+                    sph_riemann::limited_relative_velocity(vi, vj, &li, &lj, r, dist / dx_pair)
+                }
+                _ => vij,
+            };
+            let c_visc = if ext.bulk_sound_speed.is_empty() {
+                0.5 * (ci + cj)
+            } else {
+                0.5 * (ext.bulk_sound_speed[i] + ext.bulk_sound_speed[j])
+            };
             // In RZ the viscous pressure is weighted like the pressure: × r̄/(r_i r_j).
             let mut pi_ij =
-                visc.pi(vij, r, 0.5 * (rhoi + rhoj), 0.5 * (ci + cj), h_bar) * (r_bar / (ri * rj));
+                visc.pi(v_visc, r, 0.5 * (rhoi + rhoj), c_visc, h_bar) * (r_bar / (ri * rj));
             if !switch.is_empty() && pi_ij != 0.0 {
                 pi_ij *= 0.5 * (switch_of(i) + switch_of(j));
             }
@@ -519,11 +579,7 @@ fn rates_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
             // The pair's deviatoric stresses, weakened by damage: each particle's own
             // (1 − D) across a material interface, the scheme's coupling within a body.
             let (si, sj) = if solid {
-                let coupling = if same_material {
-                    scheme.stress_coupling
-                } else {
-                    scheme.stress_coupling.across_interface()
-                };
+                let coupling = scheme.stress_coupling;
                 // Tensor damage: each particle's damage across the pair's direction
                 // (sph_damage::tensor); a scalar damage projects to itself.
                 let (ci, cj) = if ext.damage_tensor.is_empty() {
@@ -535,8 +591,17 @@ fn rates_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
                         projected_damage(&ext.damage_tensor[j], n),
                     )
                 };
-                let (ai, aj) = coupling.factors(ci, cj);
-                (si_undamaged * ai, D::project(&ext.undamaged_stress(j)) * aj)
+                let sj_undamaged = D::project(&ext.undamaged_stress(j));
+                let (ai, aj) = if !same_material {
+                    coupling.interface_factors(ci, cj)
+                } else if coupling.needs_tension_test() {
+                    // FSISPH: is the pair in tension along its axis?
+                    let s_rr = r_hat.dot((si_undamaged + sj_undamaged).mul_vec(r_hat));
+                    coupling.factors(ci, cj, sph_damage::pair_is_tensile(s_rr, pi + pj))
+                } else {
+                    coupling.factors(ci, cj, false)
+                };
+                (si_undamaged * ai, sj_undamaged * aj)
             } else {
                 (D::Tensor::ZERO, D::Tensor::ZERO)
             };

@@ -15,7 +15,9 @@ pub mod timestep;
 
 pub use axisymmetric::Geometry;
 pub use boundary::Boundary;
-pub use config::{DensityForm, EnergyForm, MomentumForm, SchemeConfig, SmoothingMode};
+pub use config::{
+    CrackLength, DensityForm, EnergyForm, MomentumForm, SchemeConfig, SmoothingMode, YieldPressure,
+};
 pub use damage::DamageEvents;
 pub use error::SolverError;
 pub use material::Material;

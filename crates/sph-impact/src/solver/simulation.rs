@@ -6,7 +6,7 @@ use crate::solver::axisymmetric::{
     reference_spacing, ring_area, ring_density_for_area,
 };
 use crate::solver::boundary::Boundary;
-use crate::solver::config::{DensityForm, EnergyForm, SchemeConfig, SmoothingMode};
+use crate::solver::config::{CrackLength, DensityForm, EnergyForm, SchemeConfig, SmoothingMode};
 use crate::solver::damage::{
     DamageEvents, DamageRate, DamageStageInput, TensorRate, activates_on_pseudo_strain,
     add_shear_damage, advance_damage, damage_of, damage_rates, damaged_pressure,
@@ -29,6 +29,7 @@ use sph_core::{
 };
 use sph_damage::DamageForm;
 use sph_kernel::Kernel;
+use sph_riemann::ViscositySoundSpeed;
 use std::time::Instant;
 
 mod checkpoint;
@@ -438,6 +439,7 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
         // A solid's signal speed in the pair's Riemann problem and viscosity is the
         // longitudinal wave speed c_L = √(c² + 4G/(3ρ)) (paper §2.1).
         let mut shear_modulus = self.shear_moduli(state, &pressure);
+        let adhesion = self.adhesion_flags(state, &pressure, &sound_speed, &damage);
         // Only what the pair passes read stays alive through them (peak memory): the
         // undamaged pressure and the supports are spent, and P_D, c_L and D move into the
         // extended arrays, which are read back for the real particles below.
@@ -453,6 +455,13 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
             &self.boundaries,
         );
         ext.coupling = self.scheme.stress_coupling;
+        if !adhesion.is_empty() {
+            ext.adhesion = ext.over_ghosts(adhesion);
+        }
+        let bulk_viscosity = self.scheme.viscosity.sound_speed == ViscositySoundSpeed::Bulk;
+        if bulk_viscosity {
+            ext.bulk_sound_speed = ext.over_ghosts(sound_speed.clone());
+        }
         drop(support);
         let n_real = ext.n_real;
         // D of the real particles (empty without damage).
@@ -537,6 +546,14 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
             (pressure, sound_speed) = eos_pass(&state.particles, &self.materials);
             let pressure_d = damaged_pressures(&pressure, &ext.damage[..n_damage]);
             shear_modulus = self.shear_moduli(state, &pressure);
+            let adhesion =
+                self.adhesion_flags(state, &pressure, &sound_speed, &ext.damage[..n_damage]);
+            if !adhesion.is_empty() {
+                ext.adhesion = ext.over_ghosts(adhesion);
+            }
+            if bulk_viscosity {
+                ext.bulk_sound_speed = ext.over_ghosts(sound_speed.clone());
+            }
             let signal =
                 longitudinal_speeds(&sound_speed, &shear_modulus, &state.particles.density);
             t1 += t.elapsed();
@@ -613,11 +630,16 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
             );
         }
         drop(hoop_gauge);
+        // The crack-growth length R_s: the spacing, or the support radius (CrackLength).
+        let crack_length = match self.scheme.crack_length {
+            CrackLength::Spacing => 1.0,
+            CrackLength::Support => self.scheme.n_target,
+        };
         let spacing: Vec<f64> = if n_damage == 0 {
             Vec::new()
         } else {
             (0..state.particles.len())
-                .map(|i| self.spacing(state, i))
+                .map(|i| self.spacing(state, i) * crack_length)
                 .collect()
         };
         // Tensor damage turns with the particle's spin Ω = ½ (L − Lᵀ).
@@ -1046,10 +1068,40 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
             .into_par_iter()
             .map(
                 |i| match &self.materials[s.particles.material[i] as usize].strength {
-                    Some(model) => model.shear_modulus(&self.strength_state(s, i, pressure[i])),
+                    Some(model) => {
+                        let st = self.strength_state(s, i, pressure[i]);
+                        if self.scheme.damaged_moduli {
+                            model.damaged_shear_modulus(&st)
+                        } else {
+                            model.shear_modulus(&st)
+                        }
+                    }
                     None => 0.0,
                 },
             )
+            .collect()
+    }
+
+    /// Whether each particle is past its adhesion limit (in tension and damaged,
+    /// sph_damage::decoupling::past_adhesion), from its undamaged pressure, bulk sound
+    /// speed and damage; empty unless fractured material is decoupled
+    /// (`SchemeConfig::decouple_damaged`) and some material has damage.
+    fn adhesion_flags(
+        &self,
+        s: &State<D>,
+        pressure: &[f64],
+        sound_speed: &[f64],
+        damage: &[f64],
+    ) -> Vec<bool> {
+        if !self.scheme.decouple_damaged || damage.is_empty() {
+            return Vec::new();
+        }
+        let rho = &s.particles.density;
+        (0..s.particles.len())
+            .map(|i| {
+                let rho_c2 = rho[i] * sound_speed[i] * sound_speed[i];
+                sph_damage::decoupling::past_adhesion(pressure[i], damage[i], rho_c2)
+            })
             .collect()
     }
 
@@ -1099,7 +1151,8 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
                     _ => sph_core::glam::DMat3::ZERO,
                 };
                 let trial = y.stress[i] + ds * dt;
-                let st = self.strength_state(y, i, stage.pressure[i]);
+                let st =
+                    self.strength_state(y, i, self.scheme.yield_pressure.of(stage.pressure[i]));
                 let ret = sph_strength::radial_return(trial, model.yield_strength(&st));
                 let dep = ret.plastic_strain_increment(g).unwrap_or(0.0);
                 // ds is zero where G = 0, so the pseudo-plastic strain only grows in a

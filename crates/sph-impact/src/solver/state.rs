@@ -282,6 +282,13 @@ pub(crate) struct Extended<'a, D: Dimension> {
     pub damage_tensor: Vec<sph_core::glam::DMat3>,
     /// Artificial-stress tensor R (empty when the artificial stress is off).
     pub astress: Vec<D::Tensor>,
+    /// Whether each particle is past its adhesion limit (in tension and damaged,
+    /// sph_damage::decoupling::past_adhesion); empty unless fractured material is
+    /// decoupled (`SchemeConfig::decouple_damaged`).
+    pub adhesion: Vec<bool>,
+    /// The EOS's bulk sound speed of each particle, for a viscosity that reads it
+    /// (`ViscositySoundSpeed::Bulk`); empty otherwise ([`Self::sound_speed`] holds c_L).
+    pub bulk_sound_speed: Vec<f64>,
     /// RZ only: each particle's radius r = |x| (ghosts mirrored across the axis keep their
     /// source's); empty in Cartesian runs.
     pub radius: Vec<f64>,
@@ -374,6 +381,8 @@ impl<'a, D: Dimension> Extended<'a, D> {
             coupling: sph_damage::StressCoupling::default(),
             damage_tensor: Vec::new(),
             astress: Vec::new(),
+            adhesion: Vec::new(),
+            bulk_sound_speed: Vec::new(),
             radius: Vec::new(),
             smoothed_radius: Vec::new(),
         };
@@ -423,6 +432,18 @@ impl<'a, D: Dimension> Extended<'a, D> {
 }
 
 impl<D: Dimension> Extended<'_, D> {
+    /// A per-particle field of the real particles extended over the ghosts (each ghost
+    /// takes its source's value): for scalar fields that a mirror does not change.
+    pub fn over_ghosts<T: Copy>(&self, mut real: Vec<T>) -> Vec<T> {
+        debug_assert_eq!(real.len(), self.n_real);
+        let ghosts: Vec<T> = self.source[self.n_real..]
+            .iter()
+            .map(|&s| real[s as usize])
+            .collect();
+        real.extend(ghosts);
+        real
+    }
+
     /// Sets the damage tensors of the real particles and maps them onto the ghosts like
     /// the stress (**D**' = M **D** Mᵀ).
     pub fn set_damage_tensor(&mut self, mut real: Vec<sph_core::glam::DMat3>) {
