@@ -39,7 +39,7 @@ pub use balsara::{BALSARA_EPSILON, ViscositySwitch, balsara_factor};
 pub use hllc::{RiemannSolver, acoustic_star, hllc_star, hllc_star_with_speeds};
 pub use interface::{InterfaceCoupling, PairInterface, coupling_weight, interface_velocity};
 pub use limited_viscosity::{limited_relative_velocity, limiter_phi, van_leer_ratio};
-pub use limiter::{Limiter, reconstruct};
+pub use limiter::{Limiter, reconstruct, spheral_reconstruct};
 pub use state::{SideState, StarState};
 pub use viscosity::{MonaghanViscosity, ViscositySoundSpeed};
 pub use wave_speed::{WaveSpeedEstimate, wave_speeds};

@@ -52,10 +52,10 @@ pub enum Preset {
 /// | `viscosity_length_factor` | 1 | μ_ij from η = H r with Spheral's h, the support radius of its Wendland C2 (kernel extent 1) |
 /// | `gradient_correction`, `momentum_correction` | true | linearCorrectGradients (default true) |
 /// | `crack_length` | `support` | DamageModel::computeScalarDDDt: c_g/(extent × h) |
+/// | `energy_diffusion`, `density_stabilization` | 0.1, 0.1 | specificThermalEnergyDiffusionCoefficient, densityStabilizationCoefficient (defaults 0.1) |
 ///
 /// The viscosity coefficients, CFL number, artificial stress and smoothing stay the
-/// study's (α = β = 1, 0.25, ε = 0.2, n = 4); FSISPH's energy diffusion and density
-/// stabilisation terms are not implemented.
+/// study's (α = β = 1, 0.25, ε = 0.2, n = 4).
 pub fn fsisph_scheme(base: SchemeConfig) -> SchemeConfig {
     let mut s = base;
     s.damaged_moduli = true;
@@ -69,6 +69,8 @@ pub fn fsisph_scheme(base: SchemeConfig) -> SchemeConfig {
     s.gradient_correction = true;
     s.momentum_correction = true;
     s.crack_length = CrackLength::Support;
+    s.energy_diffusion = 0.1;
+    s.density_stabilization = 0.1;
     s
 }
 
@@ -218,6 +220,12 @@ pub struct SolverSettings {
     /// Benz–Asphaug crack-growth length: `spacing` or `support`.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub crack_length: Option<CrackLength>,
+    /// FSISPH's energy diffusion coefficient (0 off).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub energy_diffusion: Option<f64>,
+    /// FSISPH's density stabilisation coefficient (0 off).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub density_stabilization: Option<f64>,
     /// How Benz–Asphaug flaws are dealt: `3d-count` (default) or `body-count`.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub flaw_dealing: Option<FlawDealing>,
@@ -268,7 +276,9 @@ impl SolverSettings {
             damaged_moduli,
             decouple_damaged,
             yield_pressure,
-            crack_length
+            crack_length,
+            energy_diffusion,
+            density_stabilization
         );
         if let Some(z) = self.free_flight_above {
             s.free_flight_above = Some(z);

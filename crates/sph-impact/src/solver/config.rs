@@ -248,6 +248,17 @@ pub struct SchemeConfig {
     pub yield_pressure: YieldPressure,
     /// The crack-growth length of Benz–Asphaug damage ([`CrackLength`]).
     pub crack_length: CrackLength,
+    /// FSISPH's energy diffusion coefficient κ_e (0 off; Spheral's default 0.1): within
+    /// one material a pair exchanges κ_e c_eff (ẽ_i − ẽ_j) η·∇W̄/(ρ̄ |η|²) of specific
+    /// energy, ẽ reconstructed to the midpoint with the limiter, c_eff the pair's bulk
+    /// sound speed reduced by its approach speed, η = r/h̄
+    /// (src/FSISPH/SolidFSISPHEvaluateDerivatives.cc). Conserves energy pair by pair.
+    pub energy_diffusion: f64,
+    /// FSISPH's density stabilisation coefficient κ_ρ (0 off; Spheral's default 0.1):
+    /// within one material v* gains f_D κ_ρ c̄ (1 + min(0, max(−1, v_ij·r̂/c̄)))
+    /// clamp((P_j − P_i)/(K_i + K_j), ±¼) r̂, a pressure-driven smoothing of the continuity
+    /// and energy equations, weighted by f_D = (1 − |D_i − D_j|)² (same file).
+    pub density_stabilization: f64,
     /// Free flight (`None`, the default, disables): a particle above this height in the
     /// last coordinate (m; z in 3-D and RZ, y in plane 2-D), moving up and away from
     /// every wall, leaves the hydrodynamics after the step and moves on at constant
@@ -294,6 +305,8 @@ impl Default for SchemeConfig {
             decouple_damaged: false,
             yield_pressure: YieldPressure::Signed,
             crack_length: CrackLength::Spacing,
+            energy_diffusion: 0.0,
+            density_stabilization: 0.0,
         }
     }
 }
@@ -370,6 +383,14 @@ impl SchemeConfig {
             && !(cap > 0.0 && cap.is_finite())
         {
             return bad("artificial_stress.cap", cap, "must be finite and > 0");
+        }
+        for (field, value) in [
+            ("energy_diffusion", self.energy_diffusion),
+            ("density_stabilization", self.density_stabilization),
+        ] {
+            if !(value >= 0.0 && value.is_finite()) {
+                return bad(field, value, "must be finite and ≥ 0");
+            }
         }
         if let SmoothingMode::Asph { max_aspect } = self.smoothing
             && !(max_aspect >= 1.0)

@@ -34,6 +34,9 @@ pub(crate) struct Gradients<D: Dimension> {
     /// `strain_rate_correction` is on). The Jaumann rate is formed from it when the stress
     /// is updated, so pass 2 does not hold a stress rate per particle.
     pub strain_velocity: D::Tensor,
+    /// ∇e from the same-material pairs, for the energy diffusion's reconstruction (zero
+    /// unless the extended state carries the specific energies).
+    pub energy: D::Vector,
 }
 
 /// The result of pass 1: the gradients, and the linear gradient corrections M_i⁻ᵀ
@@ -260,6 +263,8 @@ fn gradients_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
         let mut l = D::Tensor::ZERO;
         let mut gp = D::Vector::ZERO;
         let mut m = D::Tensor::ZERO;
+        let mut ge = D::Vector::ZERO;
+        let energy = !ext.specific_energy.is_empty();
         let d = D::DIM as f64;
         let hi = pk.h(i);
         // Self term of Σ m ∂W/∂h: ∂W(0,h)/∂h = −d W(0,h)/h.
@@ -275,6 +280,9 @@ fn gradients_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
                 l += D::Tensor::outer(ext.velocity[j] - vi, g) * vol;
             }
             gp += g * ((ext.pressure[j] - pi) * vol);
+            if energy && ext.material[i] == ext.material[j] {
+                ge += g * ((ext.specific_energy[j] - ext.specific_energy[i]) * vol);
+            }
             m += D::Tensor::outer(dx, g) * vol;
             dwdh += ext.mass[j] * pk.dw_dh_own(i, dx);
         }
@@ -300,6 +308,7 @@ fn gradients_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
                     pressure: mi.transpose().mul_vec(gp),
                     omega,
                     strain_velocity,
+                    energy: mi.transpose().mul_vec(ge),
                 },
                 c,
             ),
@@ -309,6 +318,7 @@ fn gradients_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
                     pressure: gp,
                     omega,
                     strain_velocity,
+                    energy: ge,
                 },
                 c,
             ),
@@ -356,6 +366,24 @@ fn decoupled<D: Dimension>(
         )
     };
     sph_damage::decoupling::decouples(separating, ai, aj, di, dj)
+}
+
+/// The pair's mean sound speed for the viscosity and FSISPH's smoothing terms: the
+/// bulk sound speeds where the extended state carries them
+/// (`ViscositySoundSpeed::Bulk`), else the signal speeds `ci`, `cj` (c_L for solids).
+#[inline]
+fn pair_bulk_speed<D: Dimension>(
+    ext: &Extended<'_, D>,
+    i: usize,
+    j: usize,
+    ci: f64,
+    cj: f64,
+) -> f64 {
+    if ext.bulk_sound_speed.is_empty() {
+        0.5 * (ci + cj)
+    } else {
+        0.5 * (ext.bulk_sound_speed[i] + ext.bulk_sound_speed[j])
+    }
 }
 
 /// M⁻¹ if M is invertible and not too far from the identity (condition number of its
@@ -472,8 +500,10 @@ fn rates_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
             // Left (j) and right (i) states along r̂, reconstructed to the midpoint.
             let (mut ui, mut uj) = (vi.dot(r_hat), vj.dot(r_hat));
             let (mut pfi, mut pfj) = (pi, pj);
-            // Both sides' velocity gradients, for the limited viscosity.
+            // Both sides' velocity gradients, for the limited viscosity, and energy
+            // gradients, for the energy diffusion.
             let mut l_pair = None;
+            let mut ge_pair = (D::Vector::ZERO, D::Vector::ZERO);
             if let Some(gr) = grads.map(|g| &g.each) {
                 let gi = &gr[i];
                 let src = &gr[ext.source[j] as usize];
@@ -488,6 +518,14 @@ fn rates_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
                     )
                 };
                 l_pair = Some((gi.velocity, lj));
+                ge_pair = (
+                    gi.energy,
+                    if j < ext.n_real {
+                        src.energy
+                    } else {
+                        m.mul_vec(src.energy)
+                    },
+                );
                 let half = r * 0.5;
                 let dui = r_hat.dot(gi.velocity.mul_vec(-half));
                 let duj = r_hat.dot(lj.mul_vec(half));
@@ -512,7 +550,7 @@ fn rates_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
                 pressure: pfj,
                 sound_speed: cj,
             };
-            let v_star = interface_velocity(
+            let mut v_star = interface_velocity(
                 &PairInterface {
                     v_i: vi,
                     v_j: vj,
@@ -526,6 +564,20 @@ fn rates_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
                 scheme.riemann,
                 scheme.coupling,
             );
+            // FSISPH's density stabilisation (Spheral SolidFSISPHEvaluateDerivatives.cc):
+            // within one material, v* += f_D κ c̄ (1 + min(0, max(−1, v_ij·r̂/c̄)))
+            // clamp((P_j − P_i)/(K_i + K_j), ±¼) r̂, with K + 4G/3 = ρ c_L² and the
+            // reconstructed pressures; symmetric in (i, j), so conservation is unchanged.
+            if scheme.density_stabilization > 0.0 && same_material {
+                let c_bar = pair_bulk_speed(ext, i, j, ci, cj);
+                if c_bar > 0.0 {
+                    let f_d = sph_damage::fsisph_factor(di, dj);
+                    let c_factor = 1.0 + (vij.dot(r_hat) / c_bar).clamp(-1.0, 0.0);
+                    let k_sum = rhoi * ci * ci + rhoj * cj * cj;
+                    let dp = ((pfj - pfi) / k_sum).clamp(-0.25, 0.25);
+                    v_star += r_hat * (f_d * scheme.density_stabilization * c_factor * c_bar * dp);
+                }
+            }
 
             let rj = radius(j);
             let etaj = rhoj * smooth_r(j);
@@ -540,11 +592,7 @@ fn rates_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
                 }
                 _ => vij,
             };
-            let c_visc = if ext.bulk_sound_speed.is_empty() {
-                0.5 * (ci + cj)
-            } else {
-                0.5 * (ext.bulk_sound_speed[i] + ext.bulk_sound_speed[j])
-            };
+            let c_visc = pair_bulk_speed(ext, i, j, ci, cj);
             // In RZ the viscous pressure is weighted like the pressure: × r̄/(r_i r_j).
             let mut pi_ij =
                 visc.pi(v_visc, r, 0.5 * (rhoi + rhoj), c_visc, h_bar) * (r_bar / (ri * rj));
@@ -691,6 +739,29 @@ fn rates_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
                         - 0.5 * vij.dot(a_force)
                 }
             };
+            // FSISPH's energy diffusion between same-material pairs (Spheral
+            // SolidFSISPHEvaluateDerivatives.cc): κ c_eff (ẽ_i − ẽ_j) η·∇W̄/(ρ̄ |η|²) with
+            // ẽ the energies reconstructed to the midpoint (Spheral's limiter), c_eff = max(0, min(c̄,
+            // c̄ + v_ij·r̂)) and η = r/h̄. Antisymmetric in (i, j), so Σ m e is unchanged.
+            if scheme.energy_diffusion > 0.0 && same_material && !ext.specific_energy.is_empty() {
+                let (ei, ej) = (ext.specific_energy[i], ext.specific_energy[j]);
+                let half = r * 0.5;
+                let (ei_t, ej_t) = sph_riemann::spheral_reconstruct(
+                    ei,
+                    ej,
+                    ge_pair.0.dot(half),
+                    ge_pair.1.dot(half),
+                );
+                let c_bar = pair_bulk_speed(ext, i, j, ci, cj);
+                let c_eff = (c_bar + vij.dot(r_hat)).min(c_bar).max(0.0);
+                let h_pair = 0.5 * (pk.h(i) + pk.h(j));
+                let eta = r / h_pair;
+                let eta_bar = 0.5 * (etai + etaj);
+                let diffusion = scheme.energy_diffusion * c_eff * (ei_t - ej_t) * eta.dot(g)
+                    / (eta_bar * eta.norm_squared());
+                part.work += mj * diffusion;
+                part.de += mj * diffusion;
+            }
             if contact {
                 wall.add(&part);
                 wall_normal += r_hat;

@@ -462,6 +462,9 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
         if bulk_viscosity {
             ext.bulk_sound_speed = ext.over_ghosts(sound_speed.clone());
         }
+        if self.scheme.energy_diffusion > 0.0 {
+            ext.specific_energy = ext.over_ghosts(state.particles.specific_energy.clone());
+        }
         drop(support);
         let n_real = ext.n_real;
         // D of the real particles (empty without damage).
@@ -574,6 +577,7 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
             || self.scheme.momentum_correction
             || self.scheme.grad_h
             || self.scheme.viscosity.switch != sph_riemann::ViscositySwitch::None
+            || self.scheme.energy_diffusion > 0.0
             || !state.stress.is_empty();
         let correct = self.scheme.gradient_correction;
         let correct_strain = self.scheme.strain_rate_correction && !state.stress.is_empty();

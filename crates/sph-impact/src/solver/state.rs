@@ -289,6 +289,9 @@ pub(crate) struct Extended<'a, D: Dimension> {
     /// The EOS's bulk sound speed of each particle, for a viscosity that reads it
     /// (`ViscositySoundSpeed::Bulk`); empty otherwise ([`Self::sound_speed`] holds c_L).
     pub bulk_sound_speed: Vec<f64>,
+    /// The specific internal energy of each particle, for FSISPH's energy diffusion;
+    /// empty unless it is on (`SchemeConfig::energy_diffusion`).
+    pub specific_energy: Vec<f64>,
     /// RZ only: each particle's radius r = |x| (ghosts mirrored across the axis keep their
     /// source's); empty in Cartesian runs.
     pub radius: Vec<f64>,
@@ -383,6 +386,7 @@ impl<'a, D: Dimension> Extended<'a, D> {
             astress: Vec::new(),
             adhesion: Vec::new(),
             bulk_sound_speed: Vec::new(),
+            specific_energy: Vec::new(),
             radius: Vec::new(),
             smoothed_radius: Vec::new(),
         };
