@@ -12,7 +12,12 @@
 //! ```text
 //! cargo run --release -p sph-examples --example basalt_impact -- \
 //!     [--speed 3.9] [--resolution-scale F] [--end-time T] [--3d] [--out DIR] [--threads N]
+//!     [--checkpoint] [--resume | --overwrite]
 //! ```
+//!
+//! A second run into the same directory is refused unless `--resume` continues the first
+//! (from its checkpoint) or `--overwrite` clears it. Ctrl-C finishes the step, writes a
+//! checkpoint and exits with 130; `--resume` then continues the run.
 //!
 //! `--resolution-scale 1` is the study's resolution (A_res = 0.5 mm; about four times the
 //! cost of the default in RZ). `--3d` runs the 3-D scene instead (coarse by default:
@@ -46,6 +51,15 @@ struct Args {
     /// Worker threads (default: all cores).
     #[arg(long)]
     threads: Option<usize>,
+    /// Write a checkpoint at every snapshot (docs/scenes.md, "Checkpoints").
+    #[arg(long)]
+    checkpoint: bool,
+    /// Continue the run in the run directory from its newest checkpoint.
+    #[arg(long)]
+    resume: bool,
+    /// Clear the run directory of a previous run first.
+    #[arg(long, conflicts_with = "resume")]
+    overwrite: bool,
 }
 
 /// The bundled scene file of a speed.
@@ -237,8 +251,15 @@ fn main() -> ExitCode {
         threads: Some(threads),
         end_time: Some(end_time),
         resolution_scale: scale,
+        checkpoint: args.checkpoint,
+        resume: args.resume,
+        overwrite: args.overwrite,
         ..RunOptions::default()
     };
+    if let Err(e) = options.stop.on_signals() {
+        eprintln!("error: cannot catch SIGINT/SIGTERM: {e}");
+        return ExitCode::from(1);
+    }
     match run(&scene, &out, &options) {
         Ok(summary) => {
             print_comparison(&summary, experiment);
@@ -259,7 +280,13 @@ fn main() -> ExitCode {
         }
         Err(e) => {
             eprintln!("error: {e}");
-            ExitCode::from(if e.is_bad_input() { 2 } else { 1 })
+            ExitCode::from(if e.is_interrupted() {
+                130
+            } else if e.is_bad_input() {
+                2
+            } else {
+                1
+            })
         }
     }
 }

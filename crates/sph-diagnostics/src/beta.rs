@@ -59,7 +59,7 @@ pub struct TargetBeta {
 ///
 /// where the remnant is every particle of the view except the target's ejecta (and,
 /// with [`ProjectileDebris::ExcludeEscaping`], except escaping projectile particles);
-/// "projectile" means every body not in `criterion.targets`. P_0 =
+/// "projectile" means every body not in `criterion.targets()`. P_0 =
 /// `initial_target_momentum_z` (kg·m/s) is the initial axial momentum of everything but
 /// the projectile (0 for a target at rest).
 ///

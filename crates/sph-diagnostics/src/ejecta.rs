@@ -19,11 +19,14 @@ use serde::{Deserialize, Serialize};
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct EjectaCriterion<'a> {
     /// Body ids of the target (at least one).
-    pub targets: &'a [u16],
+    targets: &'a [u16],
     /// Height of the target's original top surface (m).
     pub surface_z: f64,
     /// Extra height above the surface a particle must pass (m, ≥ 0; default 0).
     pub tolerance: f64,
+    /// `targets` is in ascending order, so [`Self::is_target`] bisects it: every
+    /// particle is looked up, and a rubble pile's targets are thousands of bodies.
+    sorted: bool,
 }
 
 impl<'a> EjectaCriterion<'a> {
@@ -33,7 +36,13 @@ impl<'a> EjectaCriterion<'a> {
             targets,
             surface_z,
             tolerance: 0.0,
+            sorted: targets.is_sorted(),
         }
+    }
+
+    /// Body ids of the target.
+    pub fn targets(&self) -> &'a [u16] {
+        self.targets
     }
 
     /// The same criterion with another tolerance (m).
@@ -57,9 +66,14 @@ impl<'a> EjectaCriterion<'a> {
         Ok(())
     }
 
-    /// True if `body` is a target body.
+    /// True if `body` is a target body (in time logarithmic in the number of targets when
+    /// they are given in ascending order, as a scene's are).
     pub fn is_target(&self, body: u16) -> bool {
-        self.targets.contains(&body)
+        if self.sorted {
+            self.targets.binary_search(&body).is_ok()
+        } else {
+            self.targets.contains(&body)
+        }
     }
 
     /// True if a particle at `position` (m) with `velocity` (m/s) is above the surface
@@ -166,6 +180,25 @@ pub(crate) mod tests {
                 .unwrap()
                 .count,
             1
+        );
+    }
+
+    /// Target lists in ascending order (bisected) and in any order (scanned) select the
+    /// same bodies.
+    #[test]
+    fn target_lookup_in_any_order() {
+        let ascending: Vec<u16> = (0..5000).filter(|b| b % 3 != 1).collect();
+        let mut shuffled = ascending.clone();
+        shuffled.swap(0, 3000);
+        for targets in [&ascending, &shuffled] {
+            let c = EjectaCriterion::new(targets, 0.0);
+            for body in 0..5100 {
+                assert_eq!(c.is_target(body), targets.contains(&body), "{body}");
+            }
+        }
+        assert_eq!(
+            EjectaCriterion::new(&shuffled, 0.0).targets(),
+            &shuffled[..]
         );
     }
 

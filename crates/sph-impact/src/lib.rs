@@ -21,6 +21,7 @@
 //! None.
 
 pub mod cli;
+pub mod input;
 pub mod materials;
 pub mod plot;
 pub mod run;

@@ -5,7 +5,7 @@
 //!
 //! `cargo test -p sph-impact --test checkpoint -- --nocapture` prints the refusals.
 
-use sph_impact::run::{CHECKPOINT_FILE, RunError, RunOptions, RunSummary, run};
+use sph_impact::run::{RunError, RunOptions, RunSummary, StopFlag, checkpoints, run};
 use sph_impact::scene::{Scene, SceneSimulation};
 use std::path::{Path, PathBuf};
 
@@ -33,7 +33,8 @@ fn fresh(name: &str) -> PathBuf {
 fn copy_dir(from: &Path, to: &Path) {
     let _ = std::fs::remove_dir_all(to);
     std::fs::create_dir_all(to.join("snapshots")).unwrap();
-    for sub in ["", "snapshots"] {
+    std::fs::create_dir_all(to.join("checkpoints")).unwrap();
+    for sub in ["", "snapshots", "checkpoints"] {
         for e in std::fs::read_dir(from.join(sub)).unwrap() {
             let e = e.unwrap();
             if e.file_type().unwrap().is_file() {
@@ -176,7 +177,7 @@ fn a_checkpoint_that_does_not_fit_is_refused() {
     std::fs::create_dir_all(&dir).unwrap();
     assert!(refused(&scene, &dir, &resume).contains("--checkpoint"));
     run(&scene, &dir, &options(2, Some(0.5e-6), true, false)).unwrap();
-    assert!(dir.join(CHECKPOINT_FILE).is_file());
+    assert_eq!(checkpoints(&dir).len(), 1);
     // Another scene (another seed deals other flaws).
     let text = std::fs::read_to_string(scene_file("smoke_rz.toml")).unwrap();
     let other = Scene::from_toml_str(
@@ -203,11 +204,154 @@ fn a_checkpoint_that_does_not_fit_is_refused() {
     std::fs::write(&history, cut).unwrap();
     assert!(refused(&scene, &dir, &resume).contains("rows"));
     // Not a checkpoint at all.
-    std::fs::write(dir.join(CHECKPOINT_FILE), b"not cbor").unwrap();
+    let newest = checkpoints(&dir).pop().unwrap().1;
+    std::fs::write(&newest, b"not cbor").unwrap();
     assert!(refused(&scene, &dir, &resume).contains("not a checkpoint"));
-    // A fresh run without --checkpoint removes a checkpoint an earlier run left.
-    run(&scene, &dir, &options(2, Some(0.5e-6), false, false)).unwrap();
-    assert!(!dir.join(CHECKPOINT_FILE).exists());
+    // A fresh run into the used directory is refused and leaves it as it was; with
+    // --overwrite it clears the previous run (and writes no checkpoint without
+    // --checkpoint).
+    let e = run(&scene, &dir, &options(2, Some(0.5e-6), false, false)).unwrap_err();
+    assert!(
+        matches!(e, RunError::DirectoryInUse { .. }) && e.is_bad_input(),
+        "{e}"
+    );
+    println!("{e}");
+    assert_eq!(std::fs::read(&newest).unwrap(), b"not cbor");
+    let overwrite = RunOptions {
+        overwrite: true,
+        ..options(2, Some(0.5e-6), false, false)
+    };
+    run(&scene, &dir, &overwrite).unwrap();
+    assert!(checkpoints(&dir).is_empty());
+    assert!(!newest.exists());
+}
+
+/// The frame and payload of a checkpoint file.
+fn unframe(bytes: &[u8]) -> (Vec<u8>, ciborium::Value) {
+    assert_eq!(&bytes[..8], sph_impact::run::CHECKPOINT_MAGIC);
+    let value = ciborium::from_reader(&bytes[24..]).unwrap();
+    (bytes[..24].to_vec(), value)
+}
+
+/// `value` framed as a checkpoint with a correct length and checksum.
+fn reframe(frame: &[u8], value: &ciborium::Value) -> Vec<u8> {
+    let mut payload = Vec::new();
+    ciborium::into_writer(value, &mut payload).unwrap();
+    let mut out = frame[..12].to_vec();
+    out.extend((payload.len() as u64).to_le_bytes());
+    out.extend(crc32fast::hash(&payload).to_le_bytes());
+    out.extend(payload);
+    out
+}
+
+/// The entry `key` of a CBOR map.
+fn entry<'a>(v: &'a mut ciborium::Value, key: &str) -> &'a mut ciborium::Value {
+    let ciborium::Value::Map(m) = v else {
+        panic!("not a map")
+    };
+    &mut m
+        .iter_mut()
+        .find(|(k, _)| k.as_text() == Some(key))
+        .unwrap_or_else(|| panic!("no {key}"))
+        .1
+}
+
+/// A checkpoint with a flipped bit, cut short, or holding times no run has (a negative
+/// time, a NaN next snapshot, a zero first step) is refused with its reason; an earlier
+/// checkpoint of the series can be resumed from instead, and the later ones are
+/// removed.
+#[test]
+fn a_corrupt_checkpoint_is_refused_and_an_earlier_one_resumes() {
+    let scene = rz_scene();
+    let whole = fresh("checkpoint-corrupt-whole");
+    let a = run(&scene, &whole, &options(2, None, true, false)).unwrap();
+    let dir = fresh("checkpoint-corrupt");
+    copy_dir(&whole, &dir);
+    let series = checkpoints(&dir);
+    // Snapshots every 0.25 µs to 1 µs: checkpoints at 0.25, 0.5 and 0.75 µs, the
+    // default three kept.
+    assert_eq!(series.len(), 3, "{series:?}");
+    let (_, newest) = series.last().unwrap().clone();
+    let good = std::fs::read(&newest).unwrap();
+    let resume = options(2, None, false, true);
+    let mut flipped = good.clone();
+    let k = flipped.len() / 2;
+    flipped[k] ^= 0x10;
+    std::fs::write(&newest, &flipped).unwrap();
+    assert!(refused(&scene, &dir, &resume).contains("checksum"));
+    std::fs::write(&newest, &good[..good.len() - 100]).unwrap();
+    assert!(refused(&scene, &dir, &resume).contains("truncated"));
+    let (frame, value) = unframe(&good);
+    let set = |path: &[&str], x: ciborium::Value| {
+        let mut v = value.clone();
+        let mut slot = &mut v;
+        for key in path {
+            slot = entry(slot, key);
+        }
+        *slot = x;
+        std::fs::write(&newest, reframe(&frame, &v)).unwrap();
+    };
+    set(&["solver", "state", "time"], ciborium::Value::Float(-1e-7));
+    assert!(refused(&scene, &dir, &resume).contains("not a run's"));
+    set(&["next_snapshot"], ciborium::Value::Float(f64::NAN));
+    assert!(refused(&scene, &dir, &resume).contains("next snapshot"));
+    set(&["solver", "first_dt"], ciborium::Value::Float(0.0));
+    assert!(refused(&scene, &dir, &resume).contains("first time step"));
+    // The checkpoint before it resumes, removes the bad one and repeats the run.
+    let earlier = series[1].1.file_name().unwrap().to_owned();
+    let from = RunOptions {
+        resume_from: Some(earlier.into()),
+        ..resume.clone()
+    };
+    let b = run(&scene, &dir, &from).unwrap();
+    assert!(
+        (b.resumed_from_s[0] - 0.5e-6).abs() < 1e-15,
+        "{:?}",
+        b.resumed_from_s
+    );
+    assert!(!newest.exists() || std::fs::read(&newest).unwrap() != flipped);
+    assert_same_outputs((&whole, &a), (&dir, &b), "snapshots/00004.vtu");
+}
+
+/// A stop request (what SIGINT and SIGTERM raise) mid-run finishes the step, writes a
+/// checkpoint and a partial summary, and returns `Interrupted`; resumed, the run writes
+/// what the uninterrupted run writes, to the bit.
+#[test]
+fn a_run_stopped_mid_way_resumes_to_the_uninterrupted_result() {
+    let scene = rz_scene();
+    let whole = fresh("checkpoint-stop-whole");
+    let a = run(&scene, &whole, &options(2, None, false, false)).unwrap();
+    assert!(a.complete);
+    let dir = fresh("checkpoint-stop");
+    let stop = StopFlag::new();
+    let raise = stop.clone();
+    let stopped = RunOptions {
+        stop,
+        ..options(2, None, false, false)
+    };
+    // Raised from another thread while the run steps, at an arbitrary step between
+    // snapshots.
+    let watcher = std::thread::spawn({
+        let dir = dir.clone();
+        move || {
+            // Snapshots appear whole (renamed into place) as the run passes them.
+            while !dir.join("snapshots/00001.vtu").exists() {
+                std::thread::sleep(std::time::Duration::from_millis(2));
+            }
+            raise.request();
+        }
+    });
+    let e = run(&scene, &dir, &stopped).unwrap_err();
+    watcher.join().unwrap();
+    assert!(e.is_interrupted() && !e.is_bad_input(), "{e}");
+    println!("{e}");
+    let summary = std::fs::read_to_string(dir.join("summary.json")).unwrap();
+    assert!(summary.contains("\"complete\": false"), "{summary}");
+    assert_eq!(checkpoints(&dir).len(), 1);
+    let b = run(&scene, &dir, &options(1, None, false, true)).unwrap();
+    assert!(b.complete);
+    assert_eq!(b.resumed_from_s.len(), 1);
+    assert_same_outputs((&whole, &a), (&dir, &b), "snapshots/00004.vtu");
 }
 
 /// The solver refuses the state of another set-up and keeps its own.

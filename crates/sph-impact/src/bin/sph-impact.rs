@@ -1,11 +1,12 @@
 //! The `sph-impact` command-line program.
 //!
-//! Exit codes: 0 ok, 1 a failed run, 2 bad input (a bad scene, option or argument);
-//! every failure prints one line `error: …` on standard error.
+//! Exit codes: 0 ok, 1 a failed run, 2 bad input (a bad scene, option or argument),
+//! 130 a run interrupted by SIGINT or SIGTERM (after writing a checkpoint); every
+//! failure prints one line `error: …` on standard error.
 
 use clap::{Parser, Subcommand};
 use sph_impact::cli::CommandError;
-use sph_impact::run::RunOptions;
+use sph_impact::run::{RunOptions, StopFlag};
 use sph_impact::verify::{Problem, SedovDeposit};
 use std::path::PathBuf;
 use std::process::ExitCode;
@@ -14,11 +15,11 @@ use std::process::ExitCode;
 #[derive(Parser, Debug)]
 #[command(name = "sph-impact", version, about)]
 struct Cli {
-    /// Worker threads (default: all cores).
+    /// Worker threads, 1 to 1024 (default: all cores).
     #[arg(long, global = true)]
     threads: Option<usize>,
     #[command(subcommand)]
-    command: Command,
+    command: Option<Command>,
 }
 
 #[derive(Subcommand, Debug)]
@@ -40,14 +41,26 @@ enum Command {
         /// No progress bar and no result lines (for scripts).
         #[arg(long)]
         quiet: bool,
-        /// Write a checkpoint (checkpoint.cbor in the run directory) at every snapshot
-        /// before the end, so that a stopped run can be resumed.
+        /// Write a checkpoint (into checkpoints/ in the run directory) at every snapshot
+        /// before the end, so that a stopped run can be resumed. SIGINT or SIGTERM writes
+        /// one in any case.
         #[arg(long)]
         checkpoint: bool,
-        /// Continue the run in the run directory from its checkpoint (same scene and
-        /// --resolution-scale; --end-time may be later), instead of starting at t = 0.
+        /// How many checkpoints to keep (the newest).
+        #[arg(long, default_value_t = 3)]
+        keep_checkpoints: usize,
+        /// Continue the run in the run directory from its newest checkpoint (same scene
+        /// and --resolution-scale; --end-time may be later), instead of starting at t = 0.
         #[arg(long)]
         resume: bool,
+        /// With --resume: continue from this checkpoint (a path, or a file name in
+        /// checkpoints/) instead of the newest.
+        #[arg(long, requires = "resume")]
+        resume_from: Option<PathBuf>,
+        /// Clear the run directory of a previous run's files before starting (without it,
+        /// a directory holding them is refused).
+        #[arg(long, conflicts_with = "resume")]
+        overwrite: bool,
     },
     /// Validate a scene, place its bodies, and estimate the run's first time step, steps,
     /// runtime and memory.
@@ -104,6 +117,14 @@ enum Command {
 
 fn main() -> ExitCode {
     let cli = Cli::parse();
+    // Checked before the pool is built: rayon takes 0 for "all cores" and would try to
+    // start any number of threads.
+    if let Some(t) = cli.threads
+        && let Err(e) = sph_impact::cli::check_threads(t)
+    {
+        eprintln!("error: {e}");
+        return ExitCode::from(e.code);
+    }
     if let Some(t) = cli.threads
         && let Err(e) = rayon::ThreadPoolBuilder::new()
             .num_threads(t)
@@ -112,7 +133,14 @@ fn main() -> ExitCode {
         eprintln!("error: cannot start {t} threads: {e}");
         return ExitCode::from(CommandError::BAD_INPUT);
     }
-    let result = match cli.command {
+    let Some(command) = cli.command else {
+        eprintln!(
+            "error: no command given: run, check, materials or verify (`sph-impact --help` \
+             says more)"
+        );
+        return ExitCode::from(CommandError::BAD_INPUT);
+    };
+    let result = match command {
         Command::Run {
             scene,
             out,
@@ -120,7 +148,10 @@ fn main() -> ExitCode {
             resolution_scale,
             quiet,
             checkpoint,
+            keep_checkpoints,
             resume,
+            resume_from,
+            overwrite,
         } => {
             let options = RunOptions {
                 threads: cli.threads,
@@ -128,8 +159,18 @@ fn main() -> ExitCode {
                 resolution_scale,
                 quiet,
                 checkpoint,
+                keep_checkpoints,
                 resume,
+                resume_from,
+                overwrite,
+                stop: StopFlag::new(),
             };
+            // SIGINT/SIGTERM finish the step, write a checkpoint and a partial summary,
+            // and exit with 130.
+            if let Err(e) = options.stop.on_signals() {
+                eprintln!("error: cannot catch SIGINT/SIGTERM: {e}");
+                return ExitCode::from(CommandError::FAILED);
+            }
             sph_impact::cli::run_scene(&scene, out.as_deref(), &options).map(|_| ())
         }
         Command::Check {
@@ -161,13 +202,14 @@ fn main() -> ExitCode {
                 _ => sph_impact::cli::VerifyGeometry::Own,
             },
             deposit,
-        )
-        .map_err(CommandError::failed),
+        ),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
-            eprintln!("error: {e}");
+            // Messages quote names, keys and paths from the input: escaped, they cannot
+            // drive the terminal.
+            eprintln!("error: {}", sph_impact::input::printable(&e.to_string()));
             ExitCode::from(e.code)
         }
     }

@@ -137,9 +137,13 @@ pub enum MaterialError {
     /// A key that exists in the section but does not belong to the chosen model (e.g.
     /// `c0`, a Mie–Grüneisen parameter, under `model = "tillotson"`).
     #[error(
-        "{}material `{material}`: key `{field}` is not a parameter of {context}; its parameters are: {}",
+        "{}material `{material}`: key `{field}` is not a parameter of {context}; {}",
         at(.location),
-        .allowed.join(", ")
+        if .allowed.is_empty() {
+            "it has none".to_owned()
+        } else {
+            format!("its parameters are: {}", .allowed.join(", "))
+        }
     )]
     UnexpectedKey {
         /// Material name.

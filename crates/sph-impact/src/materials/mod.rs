@@ -68,5 +68,5 @@ pub use eos_choice::EosChoice;
 pub use error::{Location, MaterialError};
 pub use library::{BUILTIN_NAMES, builtin, library};
 pub use presets::{PresetKind, preset_names};
-pub use spec::{MaterialSpec, REFERENCE_TEMPERATURE};
+pub use spec::{MAX_DENSITY, MaterialSpec, REFERENCE_TEMPERATURE};
 pub use strength_choice::StrengthChoice;

@@ -19,6 +19,9 @@ use sph_damage::DamageError;
 use sph_eos::{EquationOfState, ThermalModel};
 use sph_strength::{BuiltinStrength, StrengthModel, StrengthState};
 
+/// The largest accepted material density (kg/m³): over four times osmium's, the densest
+/// element; beyond it a run's first steps collapse.
+pub const MAX_DENSITY: f64 = 1.0e5;
 /// Temperature of the reference state at which a material's shear modulus is compared
 /// with its strength model's G: 300 K, the reference temperature of the Steinberg–Guinan
 /// bracket (Steinberg, Cochran & Guinan 1980).
@@ -247,9 +250,26 @@ impl MaterialSpec {
         if self.name.trim().is_empty() {
             return inconsistent("name", "must not be empty".into());
         }
+        // Names are printed in messages and reports: an escape sequence in one would
+        // drive the terminal (the message quotes the name escaped).
+        if let Some(c) = self.name.chars().find(|c| c.is_control()) {
+            return Err(MaterialError::Inconsistent {
+                material: crate::input::printable(&self.name).into_owned(),
+                field: "name".into(),
+                reason: format!(
+                    "must not contain control characters (found U+{:04X})",
+                    u32::from(c)
+                ),
+                location: None,
+            });
+        }
         let rho = self.density;
-        if !(rho.is_finite() && rho > 0.0) {
-            return invalid("density", rho, "must be positive and finite".into());
+        if !(rho > 0.0 && rho <= MAX_DENSITY) {
+            return invalid(
+                "density",
+                rho,
+                format!("must be positive and at most {MAX_DENSITY:e} kg/m^3"),
+            );
         }
         let g = self.shear_modulus;
         if !(g.is_finite() && g >= 0.0) {

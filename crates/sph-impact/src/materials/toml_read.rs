@@ -67,13 +67,18 @@ impl MaterialSpec {
         reader.read(file).map_err(|e| reader.locate(e))
     }
 
-    /// Reads a material file ([`Self::from_toml_str`] with the path as origin).
+    /// Reads a material file ([`Self::from_toml_str`] with the path as origin); a file
+    /// larger than [`crate::input::MAX_INPUT_BYTES`] (or without end) is refused after
+    /// reading at most that much.
     pub fn from_toml_file(path: impl AsRef<Path>) -> Result<Self, MaterialError> {
         let path = path.as_ref();
-        let text = std::fs::read_to_string(path).map_err(|e| MaterialError::Io {
-            path: path.display().to_string(),
-            message: e.to_string(),
-        })?;
+        let text =
+            crate::input::read_text(path, crate::input::MAX_INPUT_BYTES).map_err(|message| {
+                MaterialError::Io {
+                    path: path.display().to_string(),
+                    message,
+                }
+            })?;
         Self::from_toml_str(&text, &path.display().to_string())
     }
 }

@@ -3,7 +3,7 @@
 //! diagnostics ([`super::finish`]).
 
 use crate::run::arrays::Arrays;
-use crate::run::checkpoint::{CHECKPOINT_FILE, RunCheckpoint};
+use crate::run::checkpoint::RunCheckpoint;
 use crate::run::error::RunError;
 use crate::run::history::{History, HistoryRow};
 use crate::run::measure::{BetaMeasure, Measurer};
@@ -47,6 +47,8 @@ pub(crate) struct Stepped<D: SceneDimension> {
     pub wall_before: f64,
     /// The checkpoint times a resumed run started from (s).
     pub resumed_from: Vec<f64>,
+    /// False for a run stopped on request before its end time.
+    pub complete: bool,
 }
 
 /// The work of a resumed run's earlier parts (all zero for a run in one go).
@@ -149,6 +151,7 @@ impl Job<'_> {
         // The work of the run's earlier parts, when it resumes from a checkpoint.
         let mut before = Before::default();
         let (mut history, mut next_snapshot) = if self.options.resume {
+            let from = RunCheckpoint::<D>::choose(dir, self.options)?;
             let RunCheckpoint {
                 next_snapshot,
                 snapshot_index,
@@ -162,18 +165,24 @@ impl Job<'_> {
                 mut resumed_from_s,
                 solver,
                 ..
-            } = RunCheckpoint::<D>::read(dir, scene, self.options, end_time)?;
+            } = RunCheckpoint::<D>::read(&from, scene, self.options, end_time)?;
             let t_checkpoint = solver.state.time;
             // The solver's state first: a checkpoint that does not fit leaves the
             // directory as it was (the history is cut only once it does).
             sim.restore(solver).map_err(|e| RunError::Resume {
-                path: dir.join(CHECKPOINT_FILE).display().to_string(),
+                path: from.display().to_string(),
                 reason: e.to_string(),
             })?;
             let history = History::resume(&history_path, history_rows)?;
+            // What the run wrote after the checkpoint is written again; none of it may
+            // stay beside the resumed run's files.
+            discard_after(dir, steps, snapshot_index)?;
+            let snapshots = dir.join("snapshots");
+            std::fs::create_dir_all(&snapshots).map_err(|e| RunError::io(&snapshots, e))?;
             for (t, file) in pvd {
                 outputs.pvd.push(t, file);
             }
+            snapshot::write_pvd(&outputs.pvd, dir)?;
             outputs.index = snapshot_index;
             outputs.crater = CraterReading {
                 depth,
@@ -193,19 +202,11 @@ impl Job<'_> {
             if !self.options.quiet {
                 eprintln!(
                     "resuming at t = {t_checkpoint:e} s (step {steps}) from {}",
-                    dir.join(CHECKPOINT_FILE).display()
+                    from.display()
                 );
             }
             (history, next_snapshot)
         } else {
-            // A checkpoint left by an earlier run in this directory is not this run's.
-            let stale = dir.join(CHECKPOINT_FILE);
-            match std::fs::remove_file(&stale) {
-                Err(e) if e.kind() != std::io::ErrorKind::NotFound => {
-                    return Err(RunError::io(&stale, e));
-                }
-                _ => {}
-            }
             let mut history = History::create(&history_path)?;
             outputs.take::<D>(&sim, copies, dir, &measurer, &mut history, None)?;
             (history, interval.min(end_time))
@@ -214,6 +215,8 @@ impl Job<'_> {
         let mut steps: u64 = before.steps;
         let mut particle_steps: u64 = before.particle_steps;
         let mut free_flight = 0;
+        // The checkpoint written on a stop request, once the loop has stopped for one.
+        let mut interrupted: Option<std::path::PathBuf> = None;
         let tol = 1e-12 * end_time;
         let failed = |sim: &SimOf<D>, e: crate::SolverError| RunError::Solver {
             time: sim.state.time,
@@ -249,33 +252,8 @@ impl Job<'_> {
                 if self.options.checkpoint && !at_end {
                     // The end's state is not a step's (density synchronised, flight
                     // ended): a run resumed to a later end time restarts from here.
-                    history.flush()?;
-                    let (format, version, geometry) = RunCheckpoint::<D>::tags();
-                    RunCheckpoint::<D> {
-                        format,
-                        version,
-                        geometry,
-                        scene: RunCheckpoint::<D>::scene_text(scene)?,
-                        resolution_scale: self.options.resolution_scale,
-                        end_time,
-                        next_snapshot,
-                        snapshot_index: outputs.index,
-                        pvd: outputs.pvd.entries().to_vec(),
-                        crater: [
-                            outputs.crater.depth,
-                            outputs.crater.diameter,
-                            outputs.crater.axis_depth,
-                            outputs.crater.beta_detached,
-                        ],
-                        steps,
-                        particle_steps,
-                        stepping_s: before.stepping + t_step.elapsed().as_secs_f64(),
-                        wall_s: before.wall + self.wall.elapsed().as_secs_f64(),
-                        history_rows: history.rows.len(),
-                        resumed_from_s: before.resumed_from.clone(),
-                        solver: sim.checkpoint(),
-                    }
-                    .write(dir)?;
+                    let at = Work::now(steps, particle_steps, t_step, self.wall, &before);
+                    self.checkpoint::<D>(&sim, &mut history, &outputs, next_snapshot, at)?;
                 }
             } else if steps.is_multiple_of(history_every) {
                 let r = sim.with_free_flight(|sim| -> Result<HistoryRow, RunError> {
@@ -292,11 +270,22 @@ impl Job<'_> {
                 history.push(r)?;
             }
             progress.update(sim.state.time, steps, false);
+            if self.options.stop.requested() && !at_end {
+                // Checkpointed as the step left it; the partial summary below then
+                // measures every particle, those in flight included.
+                let at = Work::now(steps, particle_steps, t_step, self.wall, &before);
+                interrupted =
+                    Some(self.checkpoint::<D>(&sim, &mut history, &outputs, next_snapshot, at)?);
+                free_flight = sim.in_free_flight();
+                sim.end_free_flight();
+                break;
+            }
         }
         let stepping = before.stepping + t_step.elapsed().as_secs_f64();
         progress.finish(sim.state.time, steps);
         history.flush()?;
-        finish::summarise(
+        let (time, step) = (sim.state.time, steps);
+        let summary = finish::summarise(
             self,
             Stepped::<D> {
                 sim,
@@ -310,9 +299,119 @@ impl Job<'_> {
                 stepping,
                 wall_before: before.wall,
                 resumed_from: before.resumed_from,
+                complete: interrupted.is_none(),
             },
-        )
+        )?;
+        match interrupted {
+            None => Ok(summary),
+            Some(checkpoint) => Err(RunError::Interrupted {
+                time,
+                step,
+                checkpoint: checkpoint.display().to_string(),
+            }),
+        }
     }
+
+    /// Writes a checkpoint of `sim` after the work `at` (flushing the history first, so
+    /// that the rows it counts are on disk) and returns its file.
+    fn checkpoint<D: SceneDimension>(
+        &self,
+        sim: &SimOf<D>,
+        history: &mut History,
+        outputs: &Outputs,
+        next_snapshot: f64,
+        at: Work,
+    ) -> Result<std::path::PathBuf, RunError> {
+        history.flush()?;
+        let (format, version, geometry) = RunCheckpoint::<D>::tags();
+        RunCheckpoint::<D> {
+            format,
+            version,
+            geometry,
+            scene: RunCheckpoint::<D>::scene_text(self.scene)?,
+            resolution_scale: self.options.resolution_scale,
+            end_time: self.end_time,
+            next_snapshot,
+            snapshot_index: outputs.index,
+            pvd: outputs.pvd.entries().to_vec(),
+            crater: [
+                outputs.crater.depth,
+                outputs.crater.diameter,
+                outputs.crater.axis_depth,
+                outputs.crater.beta_detached,
+            ],
+            steps: at.steps,
+            particle_steps: at.particle_steps,
+            stepping_s: at.stepping,
+            wall_s: at.wall,
+            history_rows: history.rows.len(),
+            resumed_from_s: at.resumed_from,
+            solver: sim.checkpoint(),
+        }
+        .write(self.dir, self.options.keep_checkpoints)
+    }
+}
+
+/// The work done up to a checkpoint, the earlier parts of a resumed run included.
+#[derive(Clone)]
+struct Work {
+    steps: u64,
+    particle_steps: u64,
+    /// Wall time of the stepping (s).
+    stepping: f64,
+    /// Wall time of the whole run (s).
+    wall: f64,
+    resumed_from: Vec<f64>,
+}
+
+impl Work {
+    /// The work done so far: `steps` and `particle_steps` in all, the stepping timed
+    /// from `t_step` and the run from `wall` in this part, on top of `before`.
+    fn now(
+        steps: u64,
+        particle_steps: u64,
+        t_step: Instant,
+        wall: Instant,
+        before: &Before,
+    ) -> Work {
+        Work {
+            steps,
+            particle_steps,
+            stepping: before.stepping + t_step.elapsed().as_secs_f64(),
+            wall: before.wall + wall.elapsed().as_secs_f64(),
+            resumed_from: before.resumed_from.clone(),
+        }
+    }
+}
+
+/// Removes what a run wrote after the checkpoint it resumes from (after `steps` steps,
+/// with `snapshot_index` snapshots written): later checkpoints (of a continuation being
+/// abandoned), later snapshots, the summary and the plots. They are written again.
+fn discard_after(dir: &Path, steps: u64, snapshot_index: usize) -> Result<(), RunError> {
+    let remove = |path: &Path| match std::fs::remove_file(path) {
+        Err(e) if e.kind() != std::io::ErrorKind::NotFound => Err(RunError::io(path, e)),
+        _ => Ok(()),
+    };
+    for (s, path) in crate::run::checkpoints(dir) {
+        if s > steps {
+            remove(&path)?;
+        }
+    }
+    if let Ok(entries) = std::fs::read_dir(dir.join("snapshots")) {
+        for e in entries.filter_map(|e| e.ok()) {
+            let name = e.file_name().to_string_lossy().into_owned();
+            let index = name.split('.').next().and_then(|n| n.parse::<usize>().ok());
+            if index.is_some_and(|k| k >= snapshot_index) {
+                remove(&e.path())?;
+            }
+        }
+    }
+    for name in crate::run::RUN_FILES {
+        if !matches!(name, "history.csv" | "run.pvd") {
+            remove(&dir.join(name))?;
+        }
+    }
+    Ok(())
 }
 
 /// The crater as last measured (at a snapshot), carried by the rows in between (m).

@@ -21,6 +21,9 @@ pub enum RunError {
         /// What is allowed.
         reason: &'static str,
     },
+    /// Options that exclude each other (bad input).
+    #[error("{0}")]
+    Conflict(String),
     /// A run cannot resume from its directory's checkpoint (bad input: a missing or
     /// foreign checkpoint, another scene or resolution, a history that does not match).
     #[error("cannot resume from {path}: {reason}")]
@@ -29,6 +32,32 @@ pub enum RunError {
         path: String,
         /// What is wrong.
         reason: String,
+    },
+    /// The run directory holds a previous run's files, and the run neither resumes it nor
+    /// was told to overwrite it (bad input).
+    #[error(
+        "the run directory {path} holds a previous run ({files}): pass --resume to continue \
+         it, --overwrite to clear it first, or choose another --out"
+    )]
+    DirectoryInUse {
+        /// The directory.
+        path: String,
+        /// Some of the files found.
+        files: String,
+    },
+    /// The run was asked to stop (SIGINT, SIGTERM, or `RunOptions::stop`): it finished
+    /// the step under way and wrote a checkpoint and a partial `summary.json`.
+    #[error(
+        "interrupted at t = {time:e} s (step {step}); checkpoint {checkpoint}: continue with \
+         --resume"
+    )]
+    Interrupted {
+        /// Simulated time reached (s).
+        time: f64,
+        /// Steps completed.
+        step: u64,
+        /// The checkpoint written.
+        checkpoint: String,
     },
     /// The solver stopped (the state became unphysical, the step collapsed).
     #[error("run failed at t = {time:e} s (step {step}): {message}")]
@@ -43,6 +72,15 @@ pub enum RunError {
     /// A diagnostic could not be computed.
     #[error("diagnostics: {0}")]
     Diagnostics(String),
+    /// A figure could not be drawn from the run's numbers (the run reports it as a
+    /// warning and goes on).
+    #[error("cannot draw {path}: {message}")]
+    Plot {
+        /// The figure's file.
+        path: String,
+        /// What the plotting found.
+        message: String,
+    },
     /// An output file could not be written.
     #[error("cannot write {path}: {message}")]
     Io {
@@ -58,8 +96,17 @@ impl RunError {
     pub fn is_bad_input(&self) -> bool {
         matches!(
             self,
-            RunError::Scene(_) | RunError::Option { .. } | RunError::Resume { .. }
+            RunError::Scene(_)
+                | RunError::Option { .. }
+                | RunError::Resume { .. }
+                | RunError::DirectoryInUse { .. }
+                | RunError::Conflict(_)
         )
+    }
+
+    /// True for a run stopped on request ([`RunError::Interrupted`]).
+    pub fn is_interrupted(&self) -> bool {
+        matches!(self, RunError::Interrupted { .. })
     }
 
     /// An I/O error on `path`.

@@ -30,6 +30,7 @@ pub(crate) fn summarise<D: SceneDimension>(
         stepping,
         wall_before,
         resumed_from,
+        complete,
     } = run;
     let (dir, setup) = (job.dir, &measurer.setup);
     let n = sim.state.particles.len();
@@ -87,17 +88,42 @@ pub(crate) fn summarise<D: SceneDimension>(
     )?;
 
     let plot = |name: &str| dir.join(name);
-    plots::cross_section(
+    // A figure that cannot be drawn from the numbers (a NaN β, no crater) is a warning,
+    // never a failed run once the work is done; a file that cannot be written is an error.
+    let mut warnings = Vec::new();
+    let mut drawn = |r: Result<(), RunError>| match r {
+        Err(RunError::Plot { path, message }) => {
+            warnings.push(format!("{path} not drawn: {message}"));
+            Ok(())
+        }
+        other => other,
+    };
+    drawn(plots::cross_section(
         &a,
         &sim.state.spacing0,
         setup.surface_z,
         projectile,
         D::KIND,
         &plot("crater_section.png"),
-    )?;
-    plots::histories(&history.rows, &plot("history.png"))?;
-    plots::ejecta(&ejecta_bins, &plot("ejecta.png"))?;
-    plots::projectile_energy(&e_hist, thermal.as_ref(), &plot("projectile_energy.png"))?;
+    ))?;
+    let mut skipped = Vec::new();
+    drawn(plots::histories(&history.rows, &plot("history.png")).map(|s| skipped = s))?;
+    drawn(plots::ejecta(&ejecta_bins, &plot("ejecta.png")))?;
+    drawn(plots::projectile_energy(
+        &e_hist,
+        thermal.as_ref(),
+        &plot("projectile_energy.png"),
+    ))?;
+    for s in skipped {
+        warnings.push(format!(
+            "history.png: {s} is undefined (NaN) throughout, not drawn"
+        ));
+    }
+    if !job.options.quiet {
+        for w in &warnings {
+            eprintln!("warning: {w}");
+        }
+    }
 
     let last = Totals::of::<D>(&sim, job.scene.symmetry_copies());
     let c = final_crater.unwrap_or_default();
@@ -111,6 +137,8 @@ pub(crate) fn summarise<D: SceneDimension>(
         }
     };
     let mut summary = RunSummary {
+        complete,
+        time_reached_s: sim.state.time,
         geometry: job.scene.geometry,
         totals_per: job.scene.geometry.per(),
         crater_diameter_m: lateral(c.diameter),
@@ -156,12 +184,13 @@ pub(crate) fn summarise<D: SceneDimension>(
         axis_crossings_midpoint: sim.axis_crossings_midpoint,
         free_flight_particles: free_flight,
         resumed_from_s: resumed_from,
+        warnings,
     };
     summary.set_beta(&beta);
     summary.beta_change_last_half = beta_change_last_half(&history.rows);
     summary.wall_time_s = wall_before + job.wall.elapsed().as_secs_f64();
     let path = dir.join("summary.json");
     let text = serde_json::to_string_pretty(&summary).map_err(|e| RunError::io(&path, e))?;
-    std::fs::write(&path, text).map_err(|e| RunError::io(&path, e))?;
+    crate::run::atomic::write_bytes(&path, text.as_bytes())?;
     Ok(summary)
 }

@@ -3,7 +3,7 @@
 
 use crate::run::error::RunError;
 use std::fs::File;
-use std::io::{BufWriter, Write};
+use std::io::Write;
 use std::path::{Path, PathBuf};
 
 /// The columns of `history.csv` (SI units).
@@ -93,22 +93,37 @@ pub fn beta_change_last_half(rows: &[HistoryRow]) -> f64 {
     (last.beta - mid) / last.beta
 }
 
-/// The open history file and the rows so far (kept for the plots).
+/// Bytes of whole rows gathered before they go to the file.
+const BUFFER_BYTES: usize = 1 << 16;
+
+/// The open history file and the rows so far (kept for the plots). Rows reach the
+/// file whole: they are gathered in a buffer and written a batch of whole rows at a
+/// time, so that a run killed at any moment leaves a file that ends with a complete row.
 pub(crate) struct History {
     path: PathBuf,
-    out: BufWriter<File>,
+    out: File,
+    buffer: Vec<u8>,
     pub rows: Vec<HistoryRow>,
 }
 
 impl History {
     pub fn create(path: &Path) -> Result<Self, RunError> {
-        let file = File::create(path).map_err(|e| RunError::io(path, e))?;
-        let mut out = BufWriter::new(file);
-        writeln!(out, "{}", HISTORY_COLUMNS.join(",")).map_err(|e| RunError::io(path, e))?;
+        let header = format!("{}\n", HISTORY_COLUMNS.join(","));
+        crate::run::atomic::write_bytes(path, header.as_bytes())?;
+        Self::append_to(path, Vec::new())
+    }
+
+    /// Opens `path` to append the rows after `rows`.
+    fn append_to(path: &Path, rows: Vec<HistoryRow>) -> Result<Self, RunError> {
+        let out = std::fs::OpenOptions::new()
+            .append(true)
+            .open(path)
+            .map_err(|e| RunError::io(path, e))?;
         Ok(Self {
             path: path.to_owned(),
             out,
-            rows: Vec::new(),
+            buffer: Vec::with_capacity(BUFFER_BYTES),
+            rows,
         })
     }
 
@@ -141,21 +156,18 @@ impl History {
                 parse_row(line).ok_or_else(|| refuse(format!("row {} cannot be read", k + 1)))
             })
             .collect::<Result<Vec<_>, _>>()?;
-        let file = File::create(path).map_err(|e| RunError::io(path, e))?;
-        let mut out = BufWriter::new(file);
+        let mut text = String::new();
         for line in std::iter::once(header.as_str()).chain(kept) {
-            writeln!(out, "{line}").map_err(|e| RunError::io(path, e))?;
+            text.push_str(line);
+            text.push('\n');
         }
-        Ok(Self {
-            path: path.to_owned(),
-            out,
-            rows: parsed,
-        })
+        crate::run::atomic::write_bytes(path, text.as_bytes())?;
+        Self::append_to(path, parsed)
     }
 
     pub fn push(&mut self, r: HistoryRow) -> Result<(), RunError> {
         writeln!(
-            self.out,
+            self.buffer,
             "{:e},{},{:e},{},{},{:e},{:e},{:e},{:e},{:e},{:e},{:e},{},{},{},{},{:e},{}",
             r.t,
             r.step,
@@ -178,11 +190,19 @@ impl History {
         )
         .map_err(|e| RunError::io(&self.path, e))?;
         self.rows.push(r);
+        if self.buffer.len() >= BUFFER_BYTES {
+            self.flush()?;
+        }
         Ok(())
     }
 
+    /// Writes the gathered rows to the file.
     pub fn flush(&mut self) -> Result<(), RunError> {
-        self.out.flush().map_err(|e| RunError::io(&self.path, e))
+        self.out
+            .write_all(&self.buffer)
+            .map_err(|e| RunError::io(&self.path, e))?;
+        self.buffer.clear();
+        Ok(())
     }
 }
 

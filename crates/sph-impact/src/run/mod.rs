@@ -18,7 +18,9 @@
 //! 2π × (mass per radian), so every total in the outputs is the whole body's.
 
 mod arrays;
+mod atomic;
 mod checkpoint;
+mod directory;
 mod drive;
 mod error;
 mod finish;
@@ -27,11 +29,14 @@ mod measure;
 mod plots;
 mod progress;
 mod snapshot;
+mod stop;
 mod summary;
 
-pub use checkpoint::CHECKPOINT_FILE;
+pub use checkpoint::{CHECKPOINT_DIR, MAGIC as CHECKPOINT_MAGIC, checkpoints};
+pub use directory::{RUN_FILES, RUN_SUBDIRS, clear_previous_run, previous_run_files};
 pub use error::RunError;
 pub use history::{HISTORY_COLUMNS, HistoryRow, beta_change_last_half};
+pub use stop::StopFlag;
 pub use summary::{BodyDamageSummary, RunSummary, Totals};
 
 use crate::scene::{Built, In3d, InLine, InPlane, InRz, Scene, SceneSimulation};
@@ -50,14 +55,26 @@ pub struct RunOptions {
     pub resolution_scale: f64,
     /// No progress line.
     pub quiet: bool,
-    /// Write a checkpoint ([`CHECKPOINT_FILE`] in the run directory) at every snapshot
-    /// before the end, to resume from.
+    /// Write a checkpoint (into [`CHECKPOINT_DIR`] in the run directory) at every
+    /// snapshot before the end, to resume from. A stop request writes one in any case.
     pub checkpoint: bool,
-    /// Continue from the run directory's checkpoint instead of starting at t = 0: the
-    /// scene and resolution must be those it was written with; the end time may be
-    /// later. `history.csv` keeps its rows up to the checkpoint, and the snapshots after
-    /// it are written again.
+    /// How many checkpoints to keep (the newest; at least 1): an earlier one can be
+    /// resumed from (`resume_from`) when a later one holds a bad state.
+    pub keep_checkpoints: usize,
+    /// Continue from the run directory's newest checkpoint (or `resume_from`) instead of
+    /// starting at t = 0: the scene and resolution must be those it was written with;
+    /// the end time may be later. `history.csv` keeps its rows up to the checkpoint; the
+    /// snapshots after it, the checkpoints after it, the summary and the plots are
+    /// removed and written again.
     pub resume: bool,
+    /// With `resume`: the checkpoint to continue from (a path, or a file name in
+    /// [`CHECKPOINT_DIR`]) instead of the newest.
+    pub resume_from: Option<std::path::PathBuf>,
+    /// Clear the run directory of a previous run's files ([`previous_run_files`]) before
+    /// starting; without it (or `resume`) a directory holding them is refused.
+    pub overwrite: bool,
+    /// Raised to stop the run after its current step ([`StopFlag`]).
+    pub stop: StopFlag,
 }
 
 impl Default for RunOptions {
@@ -68,34 +85,44 @@ impl Default for RunOptions {
             resolution_scale: 1.0,
             quiet: false,
             checkpoint: false,
+            keep_checkpoints: 3,
             resume: false,
+            resume_from: None,
+            overwrite: false,
+            stop: StopFlag::new(),
         }
     }
 }
 
 /// Runs `scene` and writes its outputs into `out_dir` (created if needed).
 pub fn run(scene: &Scene, out_dir: &Path, options: &RunOptions) -> Result<RunSummary, RunError> {
+    // The end time and the resolution scale are checked with the scene
+    // (`Scene::preflight`), as `check` checks them.
     let end_time = options.end_time.unwrap_or(scene.end_time);
-    if !(end_time > 0.0 && end_time.is_finite()) {
-        return Err(RunError::Option {
-            option: "end-time",
-            value: end_time,
-            reason: "must be positive (s)",
-        });
+    if options.resume && options.overwrite {
+        return Err(RunError::Conflict(
+            "--resume continues the run in the directory and --overwrite clears it: give one"
+                .into(),
+        ));
     }
-    if !(options.resolution_scale > 0.0 && options.resolution_scale.is_finite()) {
+    if options.resume_from.is_some() && !options.resume {
+        return Err(RunError::Conflict(
+            "--resume-from names the checkpoint of a --resume".into(),
+        ));
+    }
+    if options.keep_checkpoints == 0 {
         return Err(RunError::Option {
-            option: "resolution-scale",
-            value: options.resolution_scale,
-            reason: "must be positive",
+            option: "keep-checkpoints",
+            value: 0.0,
+            reason: "must be at least 1",
         });
     }
     let pool = match options.threads {
-        Some(0) => {
+        Some(n) if !(1..=crate::cli::MAX_THREADS).contains(&n) => {
             return Err(RunError::Option {
                 option: "threads",
-                value: 0.0,
-                reason: "must be at least 1",
+                value: n as f64,
+                reason: "must be 1 to 1024 (sph_impact::cli::MAX_THREADS)",
             });
         }
         Some(n) => rayon::ThreadPoolBuilder::new().num_threads(n).build(),
@@ -114,9 +141,23 @@ fn run_in_pool(
     threads: usize,
 ) -> Result<RunSummary, RunError> {
     let wall = Instant::now();
-    let snapshots = dir.join("snapshots");
-    std::fs::create_dir_all(&snapshots).map_err(|e| RunError::io(&snapshots, e))?;
-    let Built { simulation, bodies } = scene.build_scaled(options.resolution_scale)?;
+    // Refused before the set-up's work; cleared (with --overwrite) only once the scene
+    // has built, so that a bad scene does not cost the previous run.
+    if !options.resume && !options.overwrite {
+        directory::prepare_fresh(dir, false)?;
+    }
+    // The validation `sph-impact check` runs: nothing it passes fails before stepping.
+    let preflight = scene.preflight(options.resolution_scale, Some(end_time))?;
+    let Built { simulation, bodies } = scene.build_placed(&preflight.placed)?;
+    if !options.resume {
+        directory::prepare_fresh(dir, true)?;
+    }
+    // A resumed run makes it once its checkpoint has been accepted: a refused resume
+    // leaves the directory as it was.
+    if !options.resume {
+        let snapshots = dir.join("snapshots");
+        std::fs::create_dir_all(&snapshots).map_err(|e| RunError::io(&snapshots, e))?;
+    }
     let job = drive::Job {
         scene,
         dir,

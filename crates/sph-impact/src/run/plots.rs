@@ -13,14 +13,37 @@ use sph_diagnostics::{EjectaBin, MassHistogram};
 use sph_eos::ThermalModel;
 use std::path::Path;
 
+/// Renders `fig` and writes it to `path` via a temporary name.
 fn save(fig: &Figure, path: &Path) -> Result<(), RunError> {
-    fig.save_png(path)
-        .map(|_| ())
-        .map_err(|e| RunError::io(path, e))
+    let (canvas, _) = fig.render().map_err(plot_err(path))?;
+    let png = canvas.to_png().map_err(|e| RunError::io(path, e))?;
+    crate::run::atomic::write_bytes(path, &png)
 }
 
+/// A figure that cannot be drawn (as against a file that cannot be written): the run
+/// goes on without it.
 fn plot_err(path: &Path) -> impl Fn(PlotError) -> RunError + '_ {
-    move |e| RunError::io(path, e)
+    move |e| RunError::Plot {
+        path: path.display().to_string(),
+        message: e.to_string(),
+    }
+}
+
+/// `y` against `x` on `ax`, unless no point of it is finite (β of a scene without an
+/// impact speed, say): then the series is left out and named in `skipped`.
+fn line_if_finite(
+    ax: &mut sph_diagnostics::plot::Axes,
+    x: &[f64],
+    y: &[f64],
+    style: Style,
+    skipped: &mut Vec<String>,
+) -> Result<(), PlotError> {
+    if x.iter().zip(y).any(|(a, b)| a.is_finite() && b.is_finite()) {
+        ax.line(x, y, style).map(|_| ())
+    } else {
+        skipped.push(style.label.unwrap_or_else(|| "a series".to_owned()));
+        Ok(())
+    }
 }
 
 /// x against z of the particles in the slab |y| < their own spacing (in RZ: r against z
@@ -128,7 +151,8 @@ fn section_frame(x: &[f64], z: &[f64], surface: f64) -> Option<(f64, f64, f64, f
 }
 
 /// β(t) and crater depth and diameter against time.
-pub(crate) fn histories(rows: &[HistoryRow], path: &Path) -> Result<(), RunError> {
+/// Returns the series left out because none of their points is finite.
+pub(crate) fn histories(rows: &[HistoryRow], path: &Path) -> Result<Vec<String>, RunError> {
     let e = plot_err(path);
     let t: Vec<f64> = rows.iter().map(|r| r.t * 1e6).collect();
     let beta: Vec<f64> = rows.iter().map(|r| r.beta).collect();
@@ -139,34 +163,65 @@ pub(crate) fn histories(rows: &[HistoryRow], path: &Path) -> Result<(), RunError
     let depth: Vec<f64> = measured.iter().map(|r| r.crater_depth * 1e3).collect();
     let diam: Vec<f64> = measured.iter().map(|r| r.crater_diameter * 1e3).collect();
     let mut fig = Figure::new(1200, 1000);
-    fig.title("Momentum transfer and crater size against time");
+    let mut skipped = Vec::new();
     let ax = fig.panel(0, 0, 2, 1).map_err(&e)?;
     ax.title("beta").xlabel("t (us)").ylabel("beta");
-    ax.line(&t, &beta, Style::line(BLUE).label("beta = 1 + P_ej/P_imp"))
-        .map_err(&e)?;
-    ax.line(
+    line_if_finite(
+        ax,
+        &t,
+        &beta,
+        Style::line(BLUE).label("beta = 1 + P_ej/P_imp"),
+        &mut skipped,
+    )
+    .map_err(&e)?;
+    line_if_finite(
+        ax,
         &t,
         &beta_t,
         Style::line(ORANGE)
             .dashed(6.0, 4.0)
             .label("beta from target"),
+        &mut skipped,
     )
     .map_err(&e)?;
-    ax.line(
+    line_if_finite(
+        ax,
         &t,
         &beta_p,
         Style::line(GREEN)
             .dashed(2.0, 4.0)
             .label("beta as a pendulum sees it"),
+        &mut skipped,
     )
     .map_err(&e)?;
     let ax = fig.panel(1, 0, 2, 1).map_err(&e)?;
     ax.title("crater").xlabel("t (us)").ylabel("mm");
-    ax.line(&tc, &diam, Style::line(BLUE).label("diameter"))
-        .map_err(&e)?;
-    ax.line(&tc, &depth, Style::line(RED).label("depth"))
-        .map_err(&e)?;
-    save(&fig, path)
+    line_if_finite(
+        ax,
+        &tc,
+        &diam,
+        Style::line(BLUE).label("diameter"),
+        &mut skipped,
+    )
+    .map_err(&e)?;
+    line_if_finite(
+        ax,
+        &tc,
+        &depth,
+        Style::line(RED).label("depth"),
+        &mut skipped,
+    )
+    .map_err(&e)?;
+    fig.title(if skipped.is_empty() {
+        "Momentum transfer and crater size against time".to_owned()
+    } else {
+        format!(
+            "Momentum transfer and crater size against time (undefined, not drawn: {})",
+            skipped.join(", ")
+        )
+    });
+    save(&fig, path)?;
+    Ok(skipped)
 }
 
 /// Ejecta mass and axial momentum per v_z/U bin.

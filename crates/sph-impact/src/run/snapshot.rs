@@ -2,6 +2,7 @@
 //! their times (docs/scenes.md lists the arrays).
 
 use crate::run::arrays::Arrays;
+use crate::run::atomic;
 use crate::run::error::RunError;
 use crate::scene::{SceneDimension, SimOf};
 use sph_diagnostics::{Pvd, VtuWriter};
@@ -62,8 +63,12 @@ pub(crate) fn write_snapshot<D: SceneDimension>(
     if thermal {
         w.scalar("temperature", &temperature);
     }
-    w.write(&path).map_err(|e| RunError::io(&path, e))?;
+    atomic::write_with(&path, false, |f| w.write_to(f))?;
     pvd.push(s.time, name);
-    let pvd_path = dir.join("run.pvd");
-    pvd.write(&pvd_path).map_err(|e| RunError::io(&pvd_path, e))
+    write_pvd(pvd, dir)
+}
+
+/// Writes `dir/run.pvd` (via a temporary name).
+pub(crate) fn write_pvd(pvd: &Pvd, dir: &Path) -> Result<(), RunError> {
+    atomic::write_with(&dir.join("run.pvd"), false, |f| pvd.write_to(f))
 }

@@ -76,6 +76,12 @@ impl BodyDamageSummary {
 /// Everything `summary.json` holds (SI units; NaN is written as null).
 #[derive(Clone, Debug, Serialize)]
 pub struct RunSummary {
+    /// False for a run stopped on request (SIGINT, SIGTERM) before its end time: its
+    /// numbers are those of the state at `time_reached_s`, and it can be continued
+    /// from its checkpoint with `--resume`.
+    pub complete: bool,
+    /// The simulated time of the state measured (s): the end time for a complete run.
+    pub time_reached_s: f64,
     /// `"3d"`, `"3d-quarter"`, `"rz"`, `"plane"` or `"1d"`.
     pub geometry: GeometryKind,
     /// What every mass, momentum and energy (and the ejecta masses) is of: `"body"` (the
@@ -180,6 +186,9 @@ pub struct RunSummary {
     /// for a run that went through in one go (docs/scenes.md, "Checkpoints"). The wall
     /// time and the steps count the work of every part.
     pub resumed_from_s: Vec<f64>,
+    /// What the run could not measure or draw (a figure left out, a quantity undefined),
+    /// one line each; also printed on standard error.
+    pub warnings: Vec<String>,
 }
 
 impl RunSummary {

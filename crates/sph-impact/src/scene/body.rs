@@ -169,8 +169,8 @@ impl PlacementSpec {
             }
             PlacementSpec::Variable { origin, a_res, q }
             | PlacementSpec::Rings { origin, a_res, q } => {
-                if !origin.iter().all(|x| x.is_finite()) {
-                    return invalid("origin", f64::NAN, "the origin must be finite (m)");
+                if let Some(&x) = origin.iter().find(|x| !x.is_finite()) {
+                    return invalid("origin", x, "the origin must be finite (m)");
                 }
                 if !(a_res > 0.0 && a_res.is_finite()) {
                     return invalid("a_res", a_res, "A_res must be positive (m)");
@@ -197,13 +197,30 @@ pub struct BodySpec {
     /// How it is filled with particles.
     pub placement: PlacementSpec,
     /// Initial velocity (m/s); default at rest.
-    #[serde(default)]
+    #[serde(default, deserialize_with = "exactly_three")]
     pub velocity: [f64; 3],
     /// Seed of the body's Benz–Asphaug flaws; default the scene's `seed` plus the body's
     /// index.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub damage_seed: Option<u64>,
+    /// The largest accepted relative difference between the placed particles' mass and
+    /// ρV, |Σm/(ρV) − 1| (default [`DEFAULT_MASS_TOLERANCE`]): a body placed with more
+    /// is refused before the run, since its momentum, energy and β would be off by as
+    /// much. Raise it for a body whose placement is knowingly coarse.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub mass_tolerance: Option<f64>,
 }
+
+/// Three numbers, no more and no fewer (a fourth velocity component would otherwise be
+/// dropped without a word).
+fn exactly_three<'de, D: serde::Deserializer<'de>>(d: D) -> Result<[f64; 3], D::Error> {
+    let v = Vec::<f64>::deserialize(d)?;
+    <[f64; 3]>::try_from(v.as_slice())
+        .map_err(|_| serde::de::Error::invalid_length(v.len(), &"three components (x, y, z)"))
+}
+
+/// The default [`BodySpec::mass_tolerance`]: 5 %.
+pub const DEFAULT_MASS_TOLERANCE: f64 = 0.05;
 
 impl BodySpec {
     /// A body at rest.
@@ -220,6 +237,7 @@ impl BodySpec {
             placement,
             velocity: [0.0; 3],
             damage_seed: None,
+            mass_tolerance: None,
         }
     }
 
@@ -233,15 +251,26 @@ impl BodySpec {
                 SceneErrorKind::Syntax("a body name must not be empty".into()),
             ));
         }
+        // Names are printed in messages and in `check`'s report: an escape sequence in
+        // one would drive the terminal.
+        if let Some(c) = self.name.chars().find(|c| c.is_control()) {
+            return Err(err(
+                "name",
+                SceneErrorKind::Syntax(format!(
+                    "a body name must not contain control characters (found U+{:04X})",
+                    u32::from(c)
+                )),
+            ));
+        }
         self.shape.shape().map_err(|k| err("shape", k))?;
         self.placement
             .check()
             .map_err(|(key, k)| err(&format!("placement.{key}"), k))?;
-        if !self.velocity.iter().all(|v| v.is_finite()) {
+        if let Some(&v) = self.velocity.iter().find(|v| !v.is_finite()) {
             return Err(err(
                 "velocity",
                 SceneErrorKind::Invalid {
-                    value: f64::NAN,
+                    value: v,
                     reason: "the velocity must be finite (m/s)".into(),
                 },
             ));

@@ -83,7 +83,12 @@ impl Scene {
 
     /// Builds the simulation with every particle spacing divided by `resolution_scale`.
     pub fn build_scaled(&self, resolution_scale: f64) -> Result<Built, SceneError> {
-        let placed = self.place(resolution_scale)?;
+        self.build_placed(&self.place(resolution_scale)?)
+    }
+
+    /// Builds the simulation of bodies placed by [`Scene::place`] (or
+    /// [`Scene::preflight`]) from this scene.
+    pub fn build_placed(&self, placed: &[PlacedBody]) -> Result<Built, SceneError> {
         if placed.len() > u16::MAX as usize {
             return Err(SceneError::at_key(
                 "body",
@@ -91,10 +96,10 @@ impl Scene {
             ));
         }
         let (simulation, bodies) = match self.geometry {
-            GeometryKind::ThreeD => self.assemble::<In3d>(&placed, Vec::new())?,
+            GeometryKind::ThreeD => self.assemble::<In3d>(placed, Vec::new())?,
             // The quarter x > 0, y > 0: the planes x = 0 and y = 0 are mirrors.
             GeometryKind::ThreeDQuarter => self.assemble::<In3d>(
-                &placed,
+                placed,
                 [DVec3::X, DVec3::Y]
                     .map(|normal| Boundary::Wall {
                         point: DVec3::ZERO,
@@ -102,9 +107,9 @@ impl Scene {
                     })
                     .to_vec(),
             )?,
-            GeometryKind::Rz => self.assemble::<InRz>(&placed, Vec::new())?,
-            GeometryKind::Plane => self.assemble::<InPlane>(&placed, Vec::new())?,
-            GeometryKind::Line => self.assemble::<InLine>(&placed, Vec::new())?,
+            GeometryKind::Rz => self.assemble::<InRz>(placed, Vec::new())?,
+            GeometryKind::Plane => self.assemble::<InPlane>(placed, Vec::new())?,
+            GeometryKind::Line => self.assemble::<InLine>(placed, Vec::new())?,
         };
         Ok(Built { simulation, bodies })
     }

@@ -31,6 +31,9 @@ impl Scene {
         if self.bodies.is_empty() {
             return Err(SceneError::at_key("body", SceneErrorKind::NoBodies));
         }
+        // The names seen so far: a set, not a scan of the bodies before each one, so that
+        // a scene of thousands of bodies is checked in linear time.
+        let mut names = std::collections::HashSet::with_capacity(self.bodies.len());
         for (i, b) in self.bodies.iter().enumerate() {
             b.check(i)?;
             if self.geometry == GeometryKind::ThreeDQuarter
@@ -57,7 +60,7 @@ impl Scene {
             } else if matches!(b.placement, PlacementSpec::Rings { .. }) {
                 b.check_revolvable(i)?;
             }
-            if self.bodies[..i].iter().any(|o| o.name == b.name) {
+            if !names.insert(b.name.as_str()) {
                 return Err(SceneError::in_body(
                     i,
                     &b.name,

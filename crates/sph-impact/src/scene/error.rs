@@ -38,7 +38,7 @@ pub enum SceneErrorKind {
     #[error("{0}")]
     Material(String),
     /// A number out of its range.
-    #[error("{value} is invalid: {reason}")]
+    #[error("{} is invalid: {reason}", shown(*value))]
     Invalid {
         /// The value given.
         value: f64,
@@ -150,24 +150,38 @@ impl SceneError {
 
 impl fmt::Display for SceneError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        use fmt::Write;
+        let mut line = String::new();
         if let Some(l) = &self.location {
-            write!(f, "{l}: ")?;
+            write!(line, "{l}: ")?;
         }
         if let Some(b) = &self.body {
-            write!(f, "body \"{b}\": ")?;
+            write!(line, "body \"{b}\": ")?;
         }
         if let Some(k) = self.display_key() {
-            write!(f, "`{k}`: ")?;
+            write!(line, "`{k}`: ")?;
         }
         // Messages are one line: a parser message spanning lines is joined.
         let text = self.kind.to_string();
-        write!(
-            f,
-            "{}",
-            text.split('\n')
+        line.push_str(
+            &text
+                .split('\n')
                 .map(str::trim)
                 .collect::<Vec<_>>()
-                .join(" ")
-        )
+                .join(" "),
+        );
+        // Names, keys and paths come from the file: their control characters are
+        // escaped, so that the message cannot drive the terminal.
+        f.write_str(&crate::input::printable(&line))
+    }
+}
+
+/// A value as a message shows it: plainly in [1e-4, 1e6), else in scientific notation
+/// (1e-300 in full is 300 digits), both the shortest text that reads back to it.
+pub fn shown(x: f64) -> String {
+    if x == 0.0 || !x.is_finite() || (1e-4..1e6).contains(&x.abs()) {
+        format!("{x}")
+    } else {
+        format!("{x:e}")
     }
 }

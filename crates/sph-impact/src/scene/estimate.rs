@@ -117,10 +117,14 @@ impl Scene {
         end_time: Option<f64>,
     ) -> Result<CheckReport, SceneError> {
         let t0 = std::time::Instant::now();
-        let placed = self.place(resolution_scale)?;
+        // The run's own validation: what it rejects, `check` rejects.
+        let super::Preflight {
+            placed,
+            end_time: end,
+            first_dt,
+            ..
+        } = self.preflight(resolution_scale, end_time)?;
         let placement_s = t0.elapsed().as_secs_f64();
-        let setup = self.diagnostic_setup(resolution_scale)?;
-        let scheme = self.scheme();
         let mut start = 0;
         let mut bodies = Vec::new();
         for b in &placed {
@@ -146,13 +150,6 @@ impl Scene {
                 }),
             });
         }
-        let dx = bodies
-            .iter()
-            .map(|b| b.min_spacing_m)
-            .fold(f64::INFINITY, f64::min);
-        let c = bodies.iter().map(|b| b.wave_speed_m_s).fold(0.0, f64::max);
-        let first_dt = scheme.cfl * dx / (c + setup.impact_speed);
-        let end = end_time.unwrap_or(self.end_time);
         let steps = (end / first_dt).ceil();
         let solid = placed.iter().any(|b| !b.material.is_fluid());
         let rate = if solid {
@@ -188,10 +185,13 @@ impl CheckReport {
     pub fn to_text(&self) -> String {
         use std::fmt::Write;
         let mut s = String::new();
+        // The path as given, its control characters escaped (names have none: a scene
+        // with them is refused).
         let _ = writeln!(
             s,
             "scene {} (resolution scale {})",
-            self.scene, self.resolution_scale
+            crate::input::printable(&self.scene),
+            self.resolution_scale
         );
         let geometry = match self.geometry {
             GeometryKind::ThreeD => None,

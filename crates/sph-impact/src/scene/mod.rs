@@ -46,6 +46,7 @@ mod error;
 mod estimate;
 mod material_ref;
 mod place;
+mod preflight;
 mod read;
 mod roles;
 mod section;
@@ -53,12 +54,12 @@ mod settings;
 mod solver_settings;
 mod spans;
 
-pub use body::{BodySpec, PlacementSpec, ShapeSpec};
+pub use body::{BodySpec, DEFAULT_MASS_TOLERANCE, PlacementSpec, ShapeSpec};
 pub use build::{BodyInfo, Built};
 pub use builder::SceneBuilder;
 pub use dimension::SceneSimulation;
 pub(crate) use dimension::{In3d, InLine, InPlane, InRz, SceneDimension, SimOf};
-pub use error::{SceneError, SceneErrorKind};
+pub use error::{SceneError, SceneErrorKind, shown as shown_value};
 pub(crate) use estimate::human_seconds as estimate_human_seconds;
 pub use estimate::{
     ASSUMED_BYTES_PER_PARTICLE, ASSUMED_EVALUATIONS_PER_CORE_FLUID,
@@ -66,8 +67,11 @@ pub use estimate::{
 };
 pub use material_ref::MaterialRef;
 pub use place::{PlacedBody, PlacedParticles};
+pub use preflight::{
+    MAX_EXTENT_IN_SPACINGS, MAX_SPEED, MAX_STEPS, MIN_PARTICLES_ACROSS, Preflight, particles_across,
+};
 pub use roles::DiagnosticSetup;
-pub use settings::{DiagnosticsSettings, GeometryKind, OutputSettings};
+pub use settings::{DEFAULT_MAX_SNAPSHOTS, DiagnosticsSettings, GeometryKind, OutputSettings};
 pub use solver_settings::{
     ArtificialStressSettings, FlawDealing, Preset, SolverSettings, ViscositySettings,
     fsisph_scheme, study_scheme,

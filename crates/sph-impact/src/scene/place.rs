@@ -10,9 +10,11 @@ use crate::scene::body::PlacementSpec;
 use crate::scene::error::{SceneError, SceneErrorKind};
 use crate::scene::settings::GeometryKind;
 use rayon::prelude::*;
+use rstar::primitives::{GeomWithData, Rectangle};
+use rstar::{AABB, RTree};
 use sph_core::glam::{DVec2, DVec3};
 use sph_geometry::{
-    BodyParticles, FibonacciPlacement, GeometryError, LineSection, PlaneSection,
+    Aabb, BodyParticles, FibonacciPlacement, GeometryError, LineSection, PlaneSection,
     RzLayeredPlacement, Shape, cubic_lattice, revolve, rz_lattice,
 };
 use std::f64::consts::TAU;
@@ -274,27 +276,132 @@ impl Scene {
             });
             shapes.push(shape);
         }
-        for (i, body) in placed.iter().enumerate() {
-            for (j, shape) in shapes.iter().enumerate() {
-                if i == j {
-                    continue;
-                }
-                if let Some((count, first)) = inside(&body.particles, shape.as_ref()) {
-                    return Err(self.locate(SceneError::in_body(
-                        i,
-                        &body.name,
-                        "shape",
-                        SceneErrorKind::Overlap {
-                            other: placed[j].name.clone(),
-                            count,
-                            first: first.to_array(),
-                        },
-                    )));
-                }
-            }
+        if let Some(o) = first_overlap(&placed, &shapes) {
+            return Err(self.locate(SceneError::in_body(
+                o.body,
+                &placed[o.body].name,
+                "shape",
+                SceneErrorKind::Overlap {
+                    other: placed[o.other].name.clone(),
+                    count: o.count,
+                    first: o.first.to_array(),
+                },
+            )));
         }
         Ok(placed)
     }
+}
+
+/// Particles of body `body` inside the shape of body `other`.
+#[derive(Debug, PartialEq)]
+struct Overlap {
+    body: usize,
+    other: usize,
+    /// How many of `body`'s particles lie in `other`'s shape.
+    count: usize,
+    /// The first of them (the lowest index).
+    first: DVec3,
+}
+
+/// A body tested against more candidate shapes than this has its particles indexed in an
+/// R-tree first; with fewer, each test scans them all. A large target under thousands of
+/// boulders would otherwise be scanned once per boulder.
+const SCAN_CANDIDATES: usize = 8;
+
+/// The envelope of a box, for the R-trees.
+fn envelope(b: &Aabb<DVec3>) -> AABB<[f64; 3]> {
+    AABB::from_corners(b.min.to_array(), b.max.to_array())
+}
+
+/// The first overlap in body order: the first body with particles inside another body's
+/// shape, and the first such other body (the order the check has always reported in),
+/// or `None`.
+fn first_overlap(placed: &[PlacedBody], shapes: &[Box<dyn Shape<DVec3>>]) -> Option<Overlap> {
+    let index = ShapeIndex::new(shapes);
+    (0..placed.len())
+        .into_par_iter()
+        .find_map_first(|i| index.first_overlap_of(i, &placed[i].particles))
+}
+
+/// The bodies' shapes with an R-tree of their boxes.
+///
+/// Only pairs whose boxes meet are tested — the box of one body's particles against the
+/// box of the other's shape — so the work grows with the number of bodies times their
+/// neighbours, not with its square: with every pair tested, a rubble pile of 1 000
+/// boulders took 18 s and 2 000 took 98 s. A particle outside a shape's box is outside
+/// the shape, so skipping the other pairs changes no result.
+struct ShapeIndex<'a> {
+    shapes: &'a [Box<dyn Shape<DVec3>>],
+    bounds: Vec<Option<Aabb<DVec3>>>,
+    tree: RTree<GeomWithData<Rectangle<[f64; 3]>, usize>>,
+    /// The shapes without a box: they may hold any particle.
+    unbounded: Vec<usize>,
+}
+
+impl<'a> ShapeIndex<'a> {
+    fn new(shapes: &'a [Box<dyn Shape<DVec3>>]) -> Self {
+        let bounds: Vec<Option<Aabb<DVec3>>> = shapes.iter().map(|s| s.bounds()).collect();
+        let tree = RTree::bulk_load(
+            bounds
+                .iter()
+                .enumerate()
+                .filter_map(|(j, b)| {
+                    b.as_ref()
+                        .map(|b| GeomWithData::new(Rectangle::from_aabb(envelope(b)), j))
+                })
+                .collect(),
+        );
+        let unbounded = (0..bounds.len()).filter(|&j| bounds[j].is_none()).collect();
+        Self {
+            shapes,
+            bounds,
+            tree,
+            unbounded,
+        }
+    }
+
+    /// The first shape other than body `body`'s own that holds some of `particles` (the
+    /// body's), or `None`.
+    fn first_overlap_of(&self, body: usize, particles: &PlacedParticles) -> Option<Overlap> {
+        let own = particle_box(particles)?;
+        let mut candidates: Vec<usize> = self
+            .tree
+            .locate_in_envelope_intersecting(envelope(&own))
+            .map(|g| g.data)
+            .chain(self.unbounded.iter().copied())
+            .filter(|&j| j != body)
+            .collect();
+        candidates.sort_unstable();
+        let points = (candidates.len() > SCAN_CANDIDATES).then(|| {
+            RTree::bulk_load(
+                (0..particles.len())
+                    .map(|k| GeomWithData::new(particles.point(k).to_array(), k))
+                    .collect(),
+            )
+        });
+        candidates.into_iter().find_map(|j| {
+            let shape = self.shapes[j].as_ref();
+            let (count, first) = match (&points, &self.bounds[j]) {
+                (Some(points), Some(b)) => inside_indexed(points, particles, shape, b),
+                _ => inside(particles, shape),
+            }?;
+            Some(Overlap {
+                body,
+                other: j,
+                count,
+                first,
+            })
+        })
+    }
+}
+
+/// The box of the particles (as 3-D points); `None` without particles.
+fn particle_box(particles: &PlacedParticles) -> Option<Aabb<DVec3>> {
+    let first = (!particles.is_empty()).then(|| particles.point(0))?;
+    let (min, max) = (1..particles.len())
+        .map(|k| particles.point(k))
+        .fold((first, first), |(lo, hi), p| (lo.min(p), hi.max(p)));
+    Some(Aabb { min, max })
 }
 
 /// How many of the particles lie in `shape` (as 3-D points), and the first of them;
@@ -310,4 +417,90 @@ fn inside(particles: &PlacedParticles, shape: &dyn Shape<DVec3>) -> Option<(usiz
         })
         .collect();
     hits.first().map(|&k| (hits.len(), particles.point(k)))
+}
+
+/// [`inside`] for a shape with box `bounds`, testing only the particles the R-tree `index`
+/// of their points finds in the box (the same set: both boxes include their faces).
+fn inside_indexed(
+    index: &RTree<GeomWithData<[f64; 3], usize>>,
+    particles: &PlacedParticles,
+    shape: &dyn Shape<DVec3>,
+    bounds: &Aabb<DVec3>,
+) -> Option<(usize, DVec3)> {
+    let mut count = 0;
+    let mut first = usize::MAX;
+    for k in index.locate_in_envelope(envelope(bounds)).map(|g| g.data) {
+        let p = particles.point(k);
+        if bounds.contains(p) && shape.contains(p) {
+            count += 1;
+            first = first.min(k);
+        }
+    }
+    (count > 0).then(|| (count, particles.point(first)))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use sph_geometry::{Cuboid, HalfSpace, Sphere};
+
+    /// Every body's first overlap through the index is the one that testing every pair
+    /// finds: balls scattered so that many overlap, a slab under them (tested against
+    /// more than `SCAN_CANDIDATES` shapes, so its particles are indexed) and a body whose
+    /// shape is a half-space (no box: a candidate of every body).
+    #[test]
+    fn indexed_overlaps_are_those_of_all_pairs() {
+        let mut state = 12_345_u64;
+        let mut uniform = || {
+            state = state
+                .wrapping_mul(6_364_136_223_846_793_005)
+                .wrapping_add(1_442_695_040_888_963_407);
+            (state >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let mut shapes: Vec<Box<dyn Shape<DVec3>>> = Vec::new();
+        let mut particles = Vec::new();
+        let lattice = |shape: &dyn Shape<DVec3>| {
+            PlacedParticles::ThreeD(cubic_lattice(shape, 0.5e-3, 1000.0).unwrap())
+        };
+        for _ in 0..150 {
+            let centre = DVec3::new(0.02 * uniform(), 0.02 * uniform(), 4e-3 * uniform() - 1e-3);
+            let ball = Sphere::new(centre, 1e-3).unwrap();
+            particles.push(lattice(&ball));
+            shapes.push(Box::new(ball));
+        }
+        let slab = Cuboid::new(DVec3::new(0.0, 0.0, -4e-3), DVec3::new(0.02, 0.02, 0.0)).unwrap();
+        particles.push(lattice(&slab));
+        shapes.push(Box::new(slab));
+        // Placed as a small ball high above the rest; its shape holds everything below
+        // z = 2.5 mm.
+        let high = Sphere::new(DVec3::new(0.01, 0.01, 0.01), 1e-3).unwrap();
+        particles.push(lattice(&high));
+        shapes.push(Box::new(
+            HalfSpace::new(DVec3::new(0.0, 0.0, 2.5e-3), DVec3::Z).unwrap(),
+        ));
+        let index = ShapeIndex::new(&shapes);
+        let all_pairs = |i: usize| {
+            (0..shapes.len()).filter(|&j| j != i).find_map(|j| {
+                inside(&particles[i], shapes[j].as_ref()).map(|(count, first)| Overlap {
+                    body: i,
+                    other: j,
+                    count,
+                    first,
+                })
+            })
+        };
+        let mut overlapping = 0;
+        for (i, p) in particles.iter().enumerate() {
+            let expected = all_pairs(i);
+            overlapping += usize::from(expected.is_some());
+            assert_eq!(index.first_overlap_of(i, p), expected, "body {i}");
+        }
+        // Both outcomes occur, and the slab overlaps balls (not only the half-space).
+        assert!(
+            overlapping > 10 && overlapping < particles.len(),
+            "{overlapping}"
+        );
+        let slab_overlap = index.first_overlap_of(150, &particles[150]).unwrap();
+        assert!(slab_overlap.other < 150, "{slab_overlap:?}");
+    }
 }

@@ -14,17 +14,39 @@ impl Scene {
         let mut scene: Scene =
             toml::from_str(text).map_err(|e| syntax_error(&e, origin, text, Some(&map)))?;
         scene.source = map;
+        scene.every_key_read(text).map_err(|e| scene.locate(e))?;
         scene.check().map_err(|e| scene.locate(e))?;
         Ok(scene)
     }
 
-    /// Reads a scene file ([`Self::from_toml_str`] with the path as origin).
+    /// Reads a scene file ([`Self::from_toml_str`] with the path as origin); a file
+    /// larger than [`crate::input::MAX_INPUT_BYTES`] (or without end, as `/dev/zero`) is
+    /// refused after reading at most that much.
     pub fn from_toml_file(path: impl AsRef<Path>) -> Result<Self, SceneError> {
         let path = path.as_ref();
-        let text = std::fs::read_to_string(path).map_err(|e| {
+        let text = crate::input::read_text(path, crate::input::MAX_INPUT_BYTES).map_err(|e| {
             SceneError::general(SceneErrorKind::Io(format!("{}: {e}", path.display())))
         })?;
         Self::from_toml_str(&text, &path.display().to_string())
+    }
+
+    /// Every key of `text` must have been read into the scene, and every table written as
+    /// one: serde drops a key beside the tag of a variant without fields (`riemann = {
+    /// kind = "acoustic", waves = "davis" }`) and reads a struct from an array by position
+    /// (`viscosity = [1.0, 1.0]`). The scene written back must hold each key of the text
+    /// where the text has it. Inline materials are left to their own reader, which
+    /// refuses unknown keys itself.
+    fn every_key_read(&self, text: &str) -> Result<(), SceneError> {
+        let (Ok(given), Ok(kept)) = (
+            toml::from_str::<toml::Table>(text),
+            toml::Table::try_from(self),
+        ) else {
+            return Ok(());
+        };
+        match unread(&given, &kept, "") {
+            None => Ok(()),
+            Some((key, what)) => Err(SceneError::at_key(key, SceneErrorKind::Syntax(what))),
+        }
     }
 
     /// Adds the file location (and the body's name) to an error that has none, from the
@@ -98,4 +120,46 @@ fn syntax_error(
     }
     err.key = key;
     err
+}
+
+/// The first key of `given` that `kept` lacks, or a table of `kept` that `given` wrote as
+/// an array, as (its path, what is wrong).
+fn unread(given: &toml::Table, kept: &toml::Table, path: &str) -> Option<(String, String)> {
+    use toml::Value::{Array, Table};
+    for (key, value) in given {
+        let here = if path.is_empty() {
+            key.clone()
+        } else {
+            format!("{path}.{key}")
+        };
+        let Some(k) = kept.get(key) else {
+            return Some((
+                here,
+                format!("unknown key `{key}` (not a setting beside the others given)"),
+            ));
+        };
+        match (value, k) {
+            (Array(_), Table(_)) => {
+                return Some((here, "expected a table, found an array".to_owned()));
+            }
+            // An inline material is checked by the material reader.
+            (Table(_), _) if key == "material" && path.starts_with("body[") => {}
+            (Table(g), Table(k)) => {
+                if let Some(found) = unread(g, k, &here) {
+                    return Some(found);
+                }
+            }
+            (Array(g), Array(k)) => {
+                for (i, (g, k)) in g.iter().zip(k).enumerate() {
+                    if let (Table(g), Table(k)) = (g, k)
+                        && let Some(found) = unread(g, k, &format!("{here}[{i}]"))
+                    {
+                        return Some(found);
+                    }
+                }
+            }
+            _ => {}
+        }
+    }
+    None
 }

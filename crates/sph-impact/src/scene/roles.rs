@@ -6,6 +6,13 @@ use crate::scene::error::{SceneError, SceneErrorKind};
 use serde::Serialize;
 use sph_core::glam::DVec3;
 
+/// The smallest accepted `diagnostics.crater_bin`, as a fraction of the finest particle
+/// spacing.
+pub const MIN_CRATER_BIN_FRACTION: f64 = 0.01;
+
+/// The smallest accepted `diagnostics.ejecta_bin` (a fraction of the impact speed).
+pub const MIN_EJECTA_BIN: f64 = 1e-4;
+
 /// The resolved diagnostics settings of a scene.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct DiagnosticSetup {
@@ -134,12 +141,26 @@ impl Scene {
                 .fold(f64::INFINITY, f64::min)
                 / resolution_scale
         };
-        let finest_target = finest(&targets);
-        let crater_bin = length(
-            "diagnostics.crater_bin",
-            d.crater_bin,
-            finest_target.min(finest(std::slice::from_ref(&projectile))),
-        )?;
+        // A single-body scene has no target: its lengths default to the body's own.
+        let finest_target = if targets.is_empty() {
+            finest(std::slice::from_ref(&projectile))
+        } else {
+            finest(&targets)
+        };
+        let finest_all = finest_target.min(finest(std::slice::from_ref(&projectile)));
+        let crater_bin = length("diagnostics.crater_bin", d.crater_bin, finest_all)?;
+        // A bin far finer than the particles holds none of them, and the profile's bins
+        // would fill memory.
+        if crater_bin < MIN_CRATER_BIN_FRACTION * finest_all {
+            return Err(invalid(
+                "diagnostics.crater_bin",
+                crater_bin,
+                &format!(
+                    "must be at least {MIN_CRATER_BIN_FRACTION} × the finest particle \
+                     spacing ({finest_all:.3e} m)"
+                ),
+            ));
+        }
         // By default the finest target particles' own support radius at rest.
         let axis_kernel_width = length(
             "diagnostics.axis_kernel_width",
@@ -168,11 +189,11 @@ impl Scene {
             "must be ≥ 0 (m)",
         )?;
         let ejecta_bin = d.ejecta_bin.unwrap_or(0.02);
-        if !(ejecta_bin > 0.0 && ejecta_bin.is_finite()) {
+        if !(MIN_EJECTA_BIN..=1.0).contains(&ejecta_bin) {
             return Err(invalid(
                 "diagnostics.ejecta_bin",
                 ejecta_bin,
-                "must be positive",
+                &format!("must be in [{MIN_EJECTA_BIN}, 1] (a fraction of the impact speed)"),
             ));
         }
         // Both are fractions in (0, 1) with one end of the range turning them off.

@@ -86,7 +86,14 @@ pub struct OutputSettings {
     /// Steps between rows of `history.csv` (default 1: every step).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub history_every: Option<u64>,
+    /// The most snapshots a run may write (default [`DEFAULT_MAX_SNAPSHOTS`]): a
+    /// snapshot interval that would write more is refused before the run.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub max_snapshots: Option<u64>,
 }
+
+/// The default [`OutputSettings::max_snapshots`].
+pub const DEFAULT_MAX_SNAPSHOTS: u64 = 10_000;
 
 impl OutputSettings {
     /// The snapshot interval for end time `end_time` (s).

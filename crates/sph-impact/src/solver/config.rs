@@ -5,6 +5,19 @@ use sph_damage::StressCoupling;
 use sph_kernel::KernelChoice;
 use sph_riemann::{ArtificialStress, InterfaceCoupling, Limiter, MonaghanViscosity, RiemannSolver};
 
+/// The largest accepted Monaghan viscosity coefficient, α or β.
+pub const MAX_VISCOSITY: f64 = 100.0;
+
+/// The largest accepted artificial-stress ε, energy-diffusion and density-stabilisation
+/// coefficient.
+pub const MAX_COEFFICIENT: f64 = 10.0;
+
+/// The largest accepted `n_target` (spacings per smoothing length).
+pub const MAX_N_TARGET: f64 = 8.0;
+
+/// The largest accepted artificial-stress exponent n (the study's is 4).
+pub const MAX_ARTIFICIAL_STRESS_EXPONENT: i32 = 16;
+
 /// How the specific internal energy is evolved.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "kebab-case")]
@@ -326,11 +339,13 @@ impl SchemeConfig {
                 reason,
             })
         };
-        if !(self.n_target > 0.5 && self.n_target.is_finite()) {
+        if !(self.n_target > 0.5 && self.n_target <= MAX_N_TARGET) {
+            // The neighbour count grows as n_target³ in 3-D: 8 spacings is already
+            // ~ 2 × 10⁴ neighbours per particle.
             return bad(
                 "n_target",
                 self.n_target,
-                "must be a finite number of spacings > 0.5",
+                "must be a number of spacings in (0.5, 8]",
             );
         }
         if !(self.dt_floor_fraction >= 0.0 && self.dt_floor_fraction < 1.0) {
@@ -355,48 +370,147 @@ impl SchemeConfig {
         if !(self.cfl > 0.0 && self.cfl <= 1.0) {
             return bad("cfl", self.cfl, "must be in (0, 1]");
         }
-        if !(self.viscosity.alpha >= 0.0 && self.viscosity.beta >= 0.0) {
-            return bad(
-                "viscosity",
-                self.viscosity.alpha.min(self.viscosity.beta),
-                "α and β must be ≥ 0",
-            );
+        // Each field on its own, so that the value reported is the one given. The upper
+        // bounds lie far above any published use (α ≈ 1, β ≈ 2, ε ≈ 0.2, the FSISPH
+        // coefficients ≈ 0.1) and far below where the first step collapses or
+        // overflows.
+        for (field, value, max, reason) in [
+            (
+                "viscosity.alpha",
+                self.viscosity.alpha,
+                MAX_VISCOSITY,
+                "must be in [0, 100]",
+            ),
+            (
+                "viscosity.beta",
+                self.viscosity.beta,
+                MAX_VISCOSITY,
+                "must be in [0, 100]",
+            ),
+            (
+                "artificial_stress.epsilon",
+                self.artificial_stress.epsilon,
+                MAX_COEFFICIENT,
+                "must be in [0, 10]",
+            ),
+            (
+                "energy_diffusion",
+                self.energy_diffusion,
+                MAX_COEFFICIENT,
+                "must be in [0, 10]",
+            ),
+            (
+                "density_stabilization",
+                self.density_stabilization,
+                MAX_COEFFICIENT,
+                "must be in [0, 10]",
+            ),
+        ] {
+            if !(value >= 0.0 && value <= max) {
+                return bad(field, value, reason);
+            }
         }
-        if !(self.h_max_factor >= 1.0) {
-            return bad("h_max_factor", self.h_max_factor, "must be ≥ 1");
+        if !(self.h_max_factor >= 1.0 && self.h_max_factor.is_finite()) {
+            return bad("h_max_factor", self.h_max_factor, "must be finite and ≥ 1");
         }
-        if !(self.viscosity_length_factor > 0.0) {
+        if !(self.viscosity_length_factor > 0.0 && self.viscosity_length_factor.is_finite()) {
             return bad(
                 "viscosity_length_factor",
                 self.viscosity_length_factor,
-                "must be > 0",
+                "must be finite and > 0",
             );
         }
-        if !(self.artificial_stress.epsilon >= 0.0) {
+        if !(1..=MAX_ARTIFICIAL_STRESS_EXPONENT).contains(&self.artificial_stress.exponent) {
             return bad(
-                "artificial_stress.epsilon",
-                self.artificial_stress.epsilon,
-                "must be ≥ 0",
+                "artificial_stress.n",
+                f64::from(self.artificial_stress.exponent),
+                "must be an integer exponent in [1, 16]",
             );
+        }
+        // HLLC's pressure-based wave speeds need an adiabatic index > 1: with another
+        // the estimate is NaN and every pair would fall back to the acoustic solver.
+        if let RiemannSolver::Hllc {
+            waves: sph_riemann::WaveSpeedEstimate::PressureBased { gamma },
+        } = self.riemann
+            && !(gamma > 1.0 && gamma.is_finite())
+        {
+            return bad("riemann.waves.gamma", gamma, "must be finite and > 1");
         }
         if let Some(cap) = self.artificial_stress.cap
             && !(cap > 0.0 && cap.is_finite())
         {
             return bad("artificial_stress.cap", cap, "must be finite and > 0");
         }
-        for (field, value) in [
-            ("energy_diffusion", self.energy_diffusion),
-            ("density_stabilization", self.density_stabilization),
-        ] {
-            if !(value >= 0.0 && value.is_finite()) {
-                return bad(field, value, "must be finite and ≥ 0");
-            }
-        }
+
         if let SmoothingMode::Asph { max_aspect } = self.smoothing
             && !(max_aspect >= 1.0)
         {
             return bad("smoothing.max_aspect", max_aspect, "must be ≥ 1");
         }
         Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use sph_riemann::WaveSpeedEstimate;
+
+    /// The field and value a bad scheme is refused with.
+    fn refused(edit: impl FnOnce(&mut SchemeConfig)) -> (&'static str, f64) {
+        let mut s = SchemeConfig::default();
+        edit(&mut s);
+        match s.validate() {
+            Err(crate::SolverError::BadConfig { field, value, .. }) => (field, value),
+            other => panic!("accepted or another error: {other:?}"),
+        }
+    }
+
+    /// Every number finite and in range, each reported with the value given (a NaN α
+    /// as NaN, not as the β beside it).
+    #[test]
+    fn out_of_range_settings_are_refused_with_their_own_value() {
+        let (f, v) = refused(|s| s.viscosity.alpha = f64::NAN);
+        assert_eq!(f, "viscosity.alpha");
+        assert!(v.is_nan());
+        assert_eq!(
+            refused(|s| s.viscosity.beta = f64::INFINITY).0,
+            "viscosity.beta"
+        );
+        assert_eq!(
+            refused(|s| s.artificial_stress.epsilon = f64::INFINITY).0,
+            "artificial_stress.epsilon"
+        );
+        assert_eq!(
+            refused(|s| s.artificial_stress.exponent = -4),
+            ("artificial_stress.n", -4.0)
+        );
+        assert_eq!(refused(|s| s.artificial_stress.exponent = 0).1, 0.0);
+        assert_eq!(
+            refused(|s| s.h_max_factor = f64::INFINITY).0,
+            "h_max_factor"
+        );
+        assert_eq!(refused(|s| s.n_target = 1e6), ("n_target", 1e6));
+        assert_eq!(
+            refused(|s| s.viscosity_length_factor = f64::INFINITY).0,
+            "viscosity_length_factor"
+        );
+        for gamma in [1.0, 0.5, f64::NAN, f64::INFINITY] {
+            let (f, _) = refused(|s| {
+                s.riemann = RiemannSolver::Hllc {
+                    waves: WaveSpeedEstimate::PressureBased { gamma },
+                }
+            });
+            assert_eq!(f, "riemann.waves.gamma");
+        }
+        let mut s = SchemeConfig {
+            riemann: RiemannSolver::Hllc {
+                waves: WaveSpeedEstimate::PressureBased { gamma: 1.4 },
+            },
+            ..SchemeConfig::default()
+        };
+        s.n_target = MAX_N_TARGET;
+        s.artificial_stress.exponent = MAX_ARTIFICIAL_STRESS_EXPONENT;
+        s.validate().unwrap();
     }
 }

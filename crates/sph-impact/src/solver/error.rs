@@ -10,7 +10,7 @@ pub enum SolverError {
     #[error("the checkpoint does not fit this set-up: {0}")]
     BadCheckpoint(String),
     /// A scheme setting out of range.
-    #[error("scheme setting {field} = {value}: {reason}")]
+    #[error("scheme setting {field} = {}: {reason}", crate::scene::shown_value(*value))]
     BadConfig {
         /// Field name.
         field: &'static str,
@@ -93,5 +93,28 @@ pub enum SolverError {
         problem: &'static str,
         /// Which forms exist.
         reason: &'static str,
+    },
+    /// A verification problem's resolution would need more memory than a run may take
+    /// ([`crate::verify::VERIFY_MEMORY_LIMIT`]); refused before anything is allocated.
+    #[error(
+        "verify {problem}: resolution {resolution} needs about {particles:.2e} particles, \
+         {bytes:.2e} bytes at {bytes_per_particle} bytes each, above the limit of {limit:.2e} \
+         bytes; the largest resolution accepted is {largest}"
+    )]
+    TooLarge {
+        /// The problem's name.
+        problem: &'static str,
+        /// The resolution asked for.
+        resolution: usize,
+        /// The particles it would place (an estimate from above).
+        particles: f64,
+        /// The memory they would need (bytes).
+        bytes: f64,
+        /// Bytes assumed per particle ([`crate::scene::ASSUMED_BYTES_PER_PARTICLE`]).
+        bytes_per_particle: f64,
+        /// The limit (bytes).
+        limit: f64,
+        /// The largest resolution within the limit.
+        largest: usize,
     },
 }

@@ -29,6 +29,26 @@ use std::str::FromStr;
 /// The RZ column that runs a planar problem along the axis: 12 spacings wide.
 const RZ_COLUMN: column::Planar = column::Planar::Rz { columns: 12 };
 
+/// The memory a verification run may take (bytes). A resolution whose particles would
+/// need more, at [`crate::scene::ASSUMED_BYTES_PER_PARTICLE`] each, is refused with
+/// [`crate::SolverError::TooLarge`] before anything is allocated (`verify sod
+/// --resolution 8000000000` used to abort on a failed allocation). 64 GB is about 65
+/// million particles, far beyond the documented resolutions (docs/verification.md).
+pub const VERIFY_MEMORY_LIMIT: f64 = 64.0e9;
+
+/// Which of a problem's set-ups a run uses (the run method called).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Form {
+    /// Its own geometry ([`Problem::run_with`]; Sedov's deposits in 2-D or 3-D).
+    Own,
+    /// Axisymmetric ([`Problem::run_rz`]; Sedov's deposits in RZ).
+    Rz,
+    /// The plane 2-D column ([`Problem::run_plane_column`]).
+    PlaneColumn,
+    /// The rod as revolved rings ([`Problem::run_rings`]).
+    Rings,
+}
+
 /// A verification problem.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Problem {
@@ -241,11 +261,13 @@ impl Problem {
         self.run_with(resolution, self.default_scheme())
     }
 
-    /// The resolution to run at (None: the default), after checking it and the scheme.
+    /// The resolution to run at (None: the default) in `form`, after checking it — at
+    /// least 4, and particles within [`VERIFY_MEMORY_LIMIT`] — and the scheme.
     fn resolve(
         &self,
         resolution: Option<usize>,
         scheme: &crate::SchemeConfig,
+        form: Form,
     ) -> Result<usize, crate::SolverError> {
         scheme.validate()?;
         let n = resolution.unwrap_or(self.resolution_doc().1);
@@ -256,7 +278,91 @@ impl Problem {
                 reason: "must be at least 4",
             });
         }
+        let bytes_per_particle = crate::scene::ASSUMED_BYTES_PER_PARTICLE;
+        if let Some(particles) = self.particle_estimate(form, n as f64)
+            && particles * bytes_per_particle > VERIFY_MEMORY_LIMIT
+        {
+            return Err(crate::SolverError::TooLarge {
+                problem: self.name(),
+                resolution: n,
+                particles,
+                bytes: particles * bytes_per_particle,
+                bytes_per_particle,
+                limit: VERIFY_MEMORY_LIMIT,
+                largest: self.largest_resolution(form).unwrap_or(0),
+            });
+        }
         Ok(n)
+    }
+
+    /// The particles the problem's run in `form` holds at resolution `n` (the largest
+    /// simulation it builds, and a lattice it is cut from), an estimate from above of the
+    /// set-up's own count; `None` for a form the problem does not have. In f64: a
+    /// resolution of billions must not overflow on the way to being refused.
+    fn particle_estimate(&self, form: Form, n: f64) -> Option<f64> {
+        use std::f64::consts::PI;
+        // Taylor's rod, R0 = 3.2 mm and L0 = 32.4 mm: π n² × 10.125 n points in 3-D.
+        let rod = PI * n * n * (32.4 / 3.2) * n;
+        Some(match (self, form) {
+            // 1-D: Sod n left of the jump and n/8 right of it; the Toro tubes n.
+            (Problem::Sod | Problem::Toro123 | Problem::Toro3, Form::Own) => 1.125 * n,
+            (Problem::NohPlanar, Form::Own) => n,
+            // A column max(n/4, 4) spacings wide and n long.
+            (Problem::NohPlanar, Form::Rz | Form::PlaneColumn) => n * (n / 4.0).max(4.0),
+            // Lattices of spacing 1/n in the unit disc and ball; RZ the half-disc.
+            (Problem::NohCylindrical, Form::Own) => PI * n * n,
+            (Problem::NohSpherical, Form::Own) => 4.0 / 3.0 * PI * n.powi(3),
+            (Problem::NohSpherical, Form::Rz) => PI / 2.0 * n * n,
+            // n spacings across the square and cube [−1, 1]; RZ the half-square.
+            (Problem::Sedov2d, Form::Own) => n * n,
+            (Problem::Sedov3d, Form::Own) => n.powi(3),
+            (Problem::Sedov3d, Form::Rz) => 0.5 * n * n,
+            // Two bars or plates of n particles; in RZ 12 rings across each row.
+            (Problem::ElasticBar | Problem::HelImpact, Form::Own) => 2.0 * n,
+            (Problem::HelImpact | Problem::Contact, Form::Rz) => 24.0 * n,
+            // The plates, then the 3-D sphere into a block at 12 across (56 201
+            // particles).
+            (Problem::Contact, Form::Own) => (2.0 * n).max(56_201.0),
+            (Problem::Spin, Form::Own) => PI * n * n,
+            // 13 thicknesses long (3 of them clamped), n across.
+            (Problem::Plate, Form::Own) => 13.0 * n * n,
+            // Two rings of n layers across the 10 mm wall at the mean radius 35 mm.
+            (Problem::Rings, Form::Own) => 2.0 * 2.0 * PI * 3.5 * n * n,
+            // The quarter x, y > 0 the run holds, and the whole rod's points it is cut
+            // from (40 bytes each: position, mass, spacing) while it is set up.
+            (Problem::Taylor, Form::Own | Form::Rings) => {
+                0.25 * rod + rod * 40.0 / crate::scene::ASSUMED_BYTES_PER_PARTICLE
+            }
+            (Problem::Taylor, Form::Rz) => rod / (PI * n),
+            // n particles and the held ends (n_target + 1 each).
+            (Problem::TensileBar, Form::Own) => n + 16.0,
+            _ => return None,
+        })
+    }
+
+    /// The largest resolution [`VERIFY_MEMORY_LIMIT`] accepts in `form` (for Sod a
+    /// multiple of 8); `None` for a form the problem does not have.
+    fn largest_resolution(&self, form: Form) -> Option<usize> {
+        let fits = |n: u64| {
+            self.particle_estimate(form, n as f64).is_some_and(|p| {
+                p * crate::scene::ASSUMED_BYTES_PER_PARTICLE <= VERIFY_MEMORY_LIMIT
+            })
+        };
+        self.particle_estimate(form, 4.0)?;
+        // The estimates grow with n: bisect between a fitting and a failing resolution.
+        let (mut lo, mut hi) = (0_u64, 1_u64 << 53);
+        while hi - lo > 1 {
+            let mid = lo + (hi - lo) / 2;
+            if fits(mid) {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        if *self == Problem::Sod {
+            lo -= lo % 8;
+        }
+        Some(usize::try_from(lo).unwrap_or(usize::MAX))
     }
 
     /// Runs the problem in axisymmetric RZ geometry (the problems that have an RZ form:
@@ -267,7 +373,7 @@ impl Problem {
         resolution: Option<usize>,
         scheme: crate::SchemeConfig,
     ) -> Result<Outcome, crate::SolverError> {
-        let n = self.resolve(resolution, &scheme)?;
+        let n = self.resolve(resolution, &scheme, Form::Rz)?;
         match self {
             Problem::Sedov3d => self.run_sedov(Some(n), scheme, SedovDeposit::default(), true),
             Problem::NohSpherical => noh::run_spherical_rz(n, scheme),
@@ -292,7 +398,7 @@ impl Problem {
         scheme: crate::SchemeConfig,
     ) -> Result<Outcome, crate::SolverError> {
         self.run_only_form(
-            Problem::NohPlanar,
+            (Problem::NohPlanar, Form::PlaneColumn),
             "only noh-planar has a plane 2-D column form",
             (resolution, scheme),
             |n, scheme| noh::run_planar_column(n, scheme, false),
@@ -309,7 +415,7 @@ impl Problem {
         scheme: crate::SchemeConfig,
     ) -> Result<Outcome, crate::SolverError> {
         self.run_only_form(
-            Problem::Taylor,
+            (Problem::Taylor, Form::Rings),
             "only taylor has a 3-D ring-placement form",
             (resolution, scheme),
             |n, scheme| taylor::run(n, scheme, taylor::RodPlacement::Rings),
@@ -320,7 +426,7 @@ impl Problem {
     /// resolution, or the error `reason` for any other problem.
     fn run_only_form(
         &self,
-        owner: Problem,
+        (owner, form): (Problem, Form),
         reason: &'static str,
         (resolution, scheme): (Option<usize>, crate::SchemeConfig),
         run: impl FnOnce(usize, crate::SchemeConfig) -> Result<Outcome, crate::SolverError>,
@@ -328,7 +434,7 @@ impl Problem {
         if *self != owner {
             return Err(no_such_form(*self, reason));
         }
-        let n = self.resolve(resolution, &scheme)?;
+        let n = self.resolve(resolution, &scheme, form)?;
         run(n, scheme)
     }
 
@@ -341,7 +447,7 @@ impl Problem {
         deposit: SedovDeposit,
         rz: bool,
     ) -> Result<Outcome, crate::SolverError> {
-        let n = self.resolve(resolution, &scheme)?;
+        let n = self.resolve(resolution, &scheme, if rz { Form::Rz } else { Form::Own })?;
         match (self, rz) {
             (Problem::Sedov2d, false) => sedov::run_2d(n, scheme, deposit),
             (Problem::Sedov3d, false) => sedov::run_3d(n, scheme, deposit),
@@ -359,7 +465,7 @@ impl Problem {
         resolution: Option<usize>,
         scheme: crate::SchemeConfig,
     ) -> Result<Outcome, crate::SolverError> {
-        let n = self.resolve(resolution, &scheme)?;
+        let n = self.resolve(resolution, &scheme, Form::Own)?;
         match self {
             Problem::Sod => shock_tube::run(shock_tube::Tube::Sod, n, scheme),
             Problem::Toro123 => shock_tube::run(shock_tube::Tube::Toro123, n, scheme),
@@ -400,5 +506,79 @@ impl FromStr for Problem {
                 let names: Vec<&str> = Problem::ALL.iter().map(|p| p.name()).collect();
                 format!("unknown problem '{s}' (known: {})", names.join(", "))
             })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::SolverError;
+
+    const FORMS: [Form; 4] = [Form::Own, Form::Rz, Form::PlaneColumn, Form::Rings];
+
+    /// Every form of every problem refuses a resolution whose particles would not fit in
+    /// [`VERIFY_MEMORY_LIMIT`] before setting anything up, naming the largest it accepts;
+    /// that one passes the check, and lies far above the default.
+    #[test]
+    fn resolutions_beyond_the_memory_limit_are_refused() {
+        let mut forms = 0;
+        for p in Problem::ALL {
+            let scheme = p.default_scheme();
+            for form in FORMS {
+                let Some(largest) = p.largest_resolution(form) else {
+                    continue;
+                };
+                forms += 1;
+                println!("{} {form:?}: largest {largest}", p.name());
+                assert!(largest >= 5 * p.resolution_doc().1, "{}", p.name());
+                assert_eq!(p.resolve(Some(largest), &scheme, form), Ok(largest));
+                for n in [largest + 8, usize::MAX] {
+                    match p.resolve(Some(n), &scheme, form) {
+                        Err(SolverError::TooLarge {
+                            largest: l,
+                            resolution,
+                            ..
+                        }) => assert_eq!((l, resolution), (largest, n)),
+                        other => panic!("{} {form:?} at {n}: {other:?}", p.name()),
+                    }
+                }
+            }
+        }
+        // Each problem's own form, six RZ forms, noh-planar's plane column and taylor's
+        // rings.
+        assert_eq!(forms, 16 + 6 + 1 + 1);
+        let e = Problem::Sod.run(Some(8_000_000_000)).unwrap_err();
+        let m = e.to_string();
+        assert!(
+            m.contains("the largest resolution accepted is 57813904"),
+            "{m}"
+        );
+        assert!(
+            m.starts_with("verify sod: resolution 8000000000 needs about 9.00e9"),
+            "{m}"
+        );
+    }
+
+    /// The estimates against the particle counts the runs reported
+    /// (docs/verification.md): within a few percent, the Taylor bar's above by the whole
+    /// rod it is cut from.
+    #[test]
+    fn particle_estimates_match_the_runs() {
+        for (p, form, n, particles, high) in [
+            (Problem::NohSpherical, Form::Own, 20, 33_552.0, 1.0),
+            (Problem::Sedov3d, Form::Own, 60, 216_000.0, 1.0),
+            (Problem::Spin, Form::Own, 20, 1_264.0, 1.0),
+            (Problem::Plate, Form::Own, 20, 5_200.0, 1.0),
+            (Problem::Taylor, Form::Rings, 12, 13_664.0, 1.2),
+            (Problem::Taylor, Form::Rz, 12, 1_464.0, 1.0),
+        ] {
+            let e = p.particle_estimate(form, n as f64).unwrap();
+            let ratio = e / particles;
+            assert!(
+                ratio > 0.98 && ratio < 1.02 * high,
+                "{} {form:?} at {n}: {e} against {particles}",
+                p.name()
+            );
+        }
     }
 }
