@@ -252,3 +252,29 @@ fn encoded_rows_take_under_two_bytes_per_neighbour_on_a_lattice() {
     );
     assert!(per_neighbour < 2.0, "{per_neighbour}");
 }
+
+/// The candidates a build tests: at least the pairs it finds, and on a uniform lattice
+/// with one level of cells of the support radius the particles of the 27 cells about
+/// each one, about 27/(4π/3) ≈ 6.4 per neighbour.
+#[test]
+fn candidates_per_neighbour_on_a_lattice() {
+    let side = 20;
+    let x: Vec<DVec3> = (0..side * side * side)
+        .map(|i| {
+            DVec3::new(
+                (i % side) as f64,
+                ((i / side) % side) as f64,
+                (i / (side * side)) as f64,
+            )
+        })
+        .collect();
+    let h = vec![2.5; x.len()];
+    let mut grid = CellList::new();
+    let list = grid
+        .neighbors(&x, &ScalarSupport::new(&h).unwrap())
+        .unwrap();
+    let ratio = grid.candidates() as f64 / list.total_pairs() as f64;
+    println!("candidates per neighbour {ratio:.2}");
+    assert!(grid.candidates() >= list.total_pairs() as u64);
+    assert!((3.0..10.0).contains(&ratio), "{ratio}");
+}

@@ -1,0 +1,196 @@
+//! Throughput on the scenes users run: the study's 3.9 km/s impact as the bundled 3-D
+//! scene at A_res 1 mm (`examples/scenes/basalt_3.9kms.toml`, `--resolution-scale 0.5`)
+//! and as the RZ scene at the study's 0.5 mm (`basalt_3.9kms_rz.toml`), full solid physics
+//! as bundled. For each, on 1 and 2 threads: a fixed number of RK2 steps after a warm-up,
+//! particle-steps per second in all and per core, the share of each solver phase (the
+//! neighbour search's among them); then, on the state reached, the neighbours per
+//! particle and the candidates the cell list tested per neighbour found, and the memory
+//! per particle (peak resident growth and the live heap's peak during the steps).
+//!
+//! ```text
+//! cargo bench -p sph-benches --bench scenes                 # both scenes
+//! cargo bench -p sph-benches --bench scenes -- rz           # one of them: 3d or rz
+//! cargo bench -p sph-benches --bench scenes -- 3d --quick   # 3-D at A_res 2 mm, 2 steps
+//! ```
+
+use sph_benches::{Counting, LIVE, PEAK, peak_rss};
+use sph_core::{CellList, NeighborSearch, ScalarSupport};
+use sph_impact::Simulation;
+use sph_impact::scene::{Scene, SceneSimulation};
+use sph_kernel::KernelChoice;
+use std::path::Path;
+use std::sync::atomic::Ordering;
+use std::time::Instant;
+
+#[global_allocator]
+static ALLOCATOR: Counting = Counting;
+
+/// One scene to measure.
+struct Case {
+    /// "3-D" or "RZ".
+    label: &'static str,
+    file: &'static str,
+    resolution_scale: f64,
+    warm_up: usize,
+    steps: usize,
+}
+
+/// What one thread count measured.
+struct Measured {
+    particles: usize,
+    rate: f64,
+    phases: String,
+    neighbour_share: f64,
+}
+
+/// Steps `sim` `warm_up` then `steps` times and measures the second part.
+fn measure<D: sph_core::Dimension>(sim: &mut Simulation<D, KernelChoice>, case: &Case) -> Measured {
+    for _ in 0..case.warm_up {
+        sim.step(f64::INFINITY).expect("warm-up step");
+    }
+    sim.timings = Default::default();
+    let n = sim.state.particles.len();
+    let t0 = Instant::now();
+    for _ in 0..case.steps {
+        sim.step(f64::INFINITY).expect("step");
+    }
+    let wall = t0.elapsed().as_secs_f64();
+    let t = sim.timings;
+    let tot = t.total();
+    let share = |x: f64| 100.0 * x / tot;
+    Measured {
+        particles: n,
+        rate: (n * case.steps) as f64 / wall,
+        phases: format!(
+            "neighbours {:.0} %, EOS {:.0} %, gradients {:.0} %, pair loop {:.0} %, integration {:.0} %",
+            share(t.neighbours),
+            share(t.eos),
+            share(t.gradients),
+            share(t.pairs),
+            share(t.integration)
+        ),
+        neighbour_share: share(t.neighbours),
+    }
+}
+
+/// Neighbours per particle and candidates per neighbour of the cell list on `sim`'s
+/// particles with their support radii.
+fn search_cost<D: sph_core::Dimension>(sim: &Simulation<D, KernelChoice>) -> (f64, f64) {
+    let p = &sim.state.particles;
+    let mut grid = CellList::new();
+    let support = ScalarSupport::new(&p.smoothing_length).expect("radii");
+    let list = grid.neighbors(&p.position, &support).expect("search");
+    let pairs = list.total_pairs() as f64;
+    (pairs / p.len() as f64, grid.candidates() as f64 / pairs)
+}
+
+fn run_case(case: &Case) {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../examples/scenes")
+        .join(case.file);
+    let scene = Scene::from_toml_file(&path).expect("scene");
+    // The bundled scenes place at A_res = 0.5 mm (the study's) at scale 1.
+    println!(
+        "\n{} basalt impact, 3.9 km/s, A_res {} mm ({}, --resolution-scale {}): {} RK2 steps \
+         after {} warm-up steps",
+        case.label,
+        0.5 / case.resolution_scale,
+        case.file,
+        case.resolution_scale,
+        case.steps,
+        case.warm_up
+    );
+    let mut rates = Vec::new();
+    for threads in [1, 2] {
+        let pool = rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .expect("pool");
+        pool.install(|| {
+            let rss0 = peak_rss();
+            let heap0 = LIVE.load(Ordering::Relaxed);
+            let built = scene.build_scaled(case.resolution_scale).expect("build");
+            PEAK.store(LIVE.load(Ordering::Relaxed), Ordering::Relaxed);
+            let (m, cost) = match built.simulation {
+                SceneSimulation::ThreeD(mut sim) => {
+                    let m = measure(&mut sim, case);
+                    (m, search_cost(&sim))
+                }
+                SceneSimulation::Rz(mut sim) | SceneSimulation::Plane(mut sim) => {
+                    let m = measure(&mut sim, case);
+                    (m, search_cost(&sim))
+                }
+                SceneSimulation::Line(mut sim) => {
+                    let m = measure(&mut sim, case);
+                    (m, search_cost(&sim))
+                }
+            };
+            let n = m.particles as f64;
+            println!(
+                "{threads} thread(s): {} particles, {:.3e} particle-steps/s ({:.3e} per core); {}",
+                m.particles,
+                m.rate,
+                m.rate / threads as f64,
+                m.phases
+            );
+            if threads == 1 {
+                println!(
+                    "  neighbours per particle {:.1}, candidates tested per neighbour {:.2}",
+                    cost.0, cost.1
+                );
+                // The resident peak only grows past an earlier, larger case's.
+                let rss = peak_rss() - rss0;
+                println!(
+                    "  memory per particle: {} peak resident growth (VmHWM, set-up \
+                     included), {:.0} bytes live-heap peak during the steps",
+                    if rss > 0.0 {
+                        format!("{:.0} bytes", rss / n)
+                    } else {
+                        "no".to_owned()
+                    },
+                    (PEAK.load(Ordering::Relaxed).saturating_sub(heap0)) as f64 / n
+                );
+            }
+            rates.push((m.rate, m.neighbour_share));
+        });
+    }
+    if let [(one, _), (two, _)] = rates[..] {
+        println!("  2 threads / 1 thread: {:.2}×", two / one);
+    }
+}
+
+fn main() {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    let quick = args.iter().any(|a| a == "--quick");
+    let want = |name: &str| {
+        let picked: Vec<&String> = args.iter().filter(|a| *a == "3d" || *a == "rz").collect();
+        picked.is_empty() || picked.iter().any(|a| *a == name)
+    };
+    let cases = [
+        (
+            "3d",
+            Case {
+                label: "3-D",
+                file: "basalt_3.9kms.toml",
+                resolution_scale: if quick { 0.25 } else { 0.5 },
+                warm_up: if quick { 1 } else { 2 },
+                steps: if quick { 2 } else { 4 },
+            },
+        ),
+        (
+            "rz",
+            Case {
+                label: "RZ",
+                file: "basalt_3.9kms_rz.toml",
+                resolution_scale: if quick { 0.5 } else { 1.0 },
+                warm_up: 20,
+                steps: if quick { 50 } else { 400 },
+            },
+        ),
+    ];
+    for (name, case) in &cases {
+        if want(name) {
+            run_case(case);
+        }
+    }
+}
