@@ -105,6 +105,7 @@ fn sigint_mid_run_checkpoints_and_a_resume_repeats_the_uninterrupted_run() {
         .arg("--out")
         .arg(&dir)
         .args(["--quiet", "--threads", "1"])
+        .stderr(std::process::Stdio::piped())
         .spawn()
         .unwrap();
     // Once the first snapshot after t = 0 is in place, the run is between snapshots.
@@ -121,8 +122,15 @@ fn sigint_mid_run_checkpoints_and_a_resume_repeats_the_uninterrupted_run() {
         .status()
         .unwrap();
     assert!(kill.success());
-    let status = child.wait().unwrap();
-    assert_eq!(status.code(), Some(130), "{status:?}");
+    let out = child.wait_with_output().unwrap();
+    let message = stderr(&out);
+    println!("{message}");
+    assert_eq!(out.status.code(), Some(130), "{message}");
+    assert!(
+        message.starts_with("error: interrupted at t = ") && message.contains("--resume"),
+        "{message}"
+    );
+    assert_eq!(message.lines().count(), 1, "{message}");
     let summary = std::fs::read_to_string(dir.join("summary.json")).unwrap();
     assert!(summary.contains("\"complete\": false"), "{summary}");
     let history = std::fs::read_to_string(dir.join("history.csv")).unwrap();
