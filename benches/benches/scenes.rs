@@ -74,13 +74,21 @@ fn measure<D: sph_core::Dimension>(sim: &mut Simulation<D, KernelChoice>, case: 
 }
 
 /// Neighbours per particle and candidates per neighbour of the cell list on `sim`'s
-/// particles with their support radii.
+/// particles with their support radii; prints each grid level's share of the candidates.
 fn search_cost<D: sph_core::Dimension>(sim: &Simulation<D, KernelChoice>) -> (f64, f64) {
     let p = &sim.state.particles;
     let mut grid = CellList::new();
     let support = ScalarSupport::new(&p.smoothing_length).expect("radii");
     let list = grid.neighbors(&p.position, &support).expect("search");
     let pairs = list.total_pairs() as f64;
+    for (k, level) in grid.level_stats().iter().enumerate() {
+        println!(
+            "  grid level {k}: cell {:.3e} m, {} particles, {:.1} % of the candidates",
+            level.cell_size,
+            level.particles,
+            100.0 * level.candidates as f64 / grid.candidates() as f64
+        );
+    }
     (pairs / p.len() as f64, grid.candidates() as f64 / pairs)
 }
 

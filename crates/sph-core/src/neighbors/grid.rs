@@ -36,6 +36,8 @@ pub struct LevelStats {
     pub cells: f64,
     /// Whether the level uses the dense cell table (else sorted keys).
     pub dense: bool,
+    /// Candidates of this level the last build tested by distance, over all the rows.
+    pub candidates: u64,
 }
 
 /// The sorted-grid cell-list neighbour search (see the module docs).
@@ -119,17 +121,17 @@ impl<V: Vector> NeighborSearch<V> for CellList {
 
         // Each chunk of rows is searched by one task and kept as it is (no concatenation
         // into one array, which would hold the indices twice at the peak).
-        let (chunks, candidates): (Vec<Chunk>, Vec<u64>) = (0..n.div_ceil(CHUNK))
+        let (chunks, candidates): (Vec<Chunk>, Vec<Vec<u64>>) = (0..n.div_ceil(CHUNK))
             .into_par_iter()
             .map(|c| {
                 let range = c * CHUNK..((c + 1) * CHUNK).min(n);
                 let mut chunk = Chunk::with_rows(range.start, range.len());
                 let mut row = Vec::new();
-                let mut candidates = 0;
+                let mut candidates = vec![0u64; levels.len()];
                 for i in range {
                     row.clear();
-                    for level in &levels {
-                        candidates += level.query(i, positions[i], radius[i], criterion, &mut row);
+                    for (level, tested) in levels.iter().zip(&mut candidates) {
+                        *tested += level.query(i, positions[i], radius[i], criterion, &mut row);
                     }
                     row.sort_unstable();
                     chunk.push_row(&row);
@@ -137,7 +139,12 @@ impl<V: Vector> NeighborSearch<V> for CellList {
                 (chunk.finish(), candidates)
             })
             .unzip();
-        self.candidates = candidates.iter().sum();
+        for per_chunk in &candidates {
+            for (stats, tested) in self.stats.iter_mut().zip(per_chunk) {
+                stats.candidates += tested;
+            }
+        }
+        self.candidates = self.stats.iter().map(|s| s.candidates).sum();
         Ok(NeighborList::from_chunks(chunks))
     }
 }
@@ -253,6 +260,7 @@ impl<V: Vector> Level<V> {
             particles: self.index.len(),
             cells: self.dims.iter().map(|&d| d as f64).product(),
             dense: matches!(self.lookup, Lookup::Dense(_)),
+            candidates: 0,
         }
     }
 
