@@ -306,15 +306,19 @@ impl<V: Vector> Level<V> {
             hi[k] = b as i64;
         }
         let r2 = r * r;
+        // Counted a row of cells at a time, off the inner loop; i itself is not a
+        // candidate.
         let mut tested = 0u64;
         for z in lo[2]..=hi[2] {
             for y in lo[1]..=hi[1] {
-                for s in self.row(z, y, lo[0], hi[0]) {
+                let slots = self.row(z, y, lo[0], hi[0]);
+                tested += slots.len() as u64;
+                for s in slots {
                     let j = self.index[s];
                     if j as usize == i {
+                        tested -= 1;
                         continue;
                     }
-                    tested += 1;
                     let d = xi - self.pos[s];
                     if d.norm_squared() < r2 && crit.accepts(i, j as usize, d) {
                         out.push(j);
