@@ -11,6 +11,7 @@
 //! cargo bench -p sph-benches --bench scenes                 # both scenes
 //! cargo bench -p sph-benches --bench scenes -- rz           # one of them: 3d or rz
 //! cargo bench -p sph-benches --bench scenes -- 3d --quick   # 3-D at A_res 2 mm, 2 steps
+//! cargo bench -p sph-benches --bench scenes -- 3d --search  # ten searches, no steps
 //! ```
 
 use sph_benches::{Counting, LIVE, PEAK, peak_rss};
@@ -62,8 +63,9 @@ fn measure<D: sph_core::Dimension>(sim: &mut Simulation<D, KernelChoice>, case: 
         particles: n,
         rate: (n * case.steps) as f64 / wall,
         phases: format!(
-            "neighbours {:.0} %, EOS {:.0} %, gradients {:.0} %, pair loop {:.0} %, integration {:.0} %",
+            "neighbours {:.0} %, pair set-up {:.0} %, EOS {:.0} %, gradients {:.0} %, pair loop {:.0} %, integration {:.0} %",
             share(t.neighbours),
+            share(t.setup),
             share(t.eos),
             share(t.gradients),
             share(t.pairs),
@@ -74,18 +76,32 @@ fn measure<D: sph_core::Dimension>(sim: &mut Simulation<D, KernelChoice>, case: 
 }
 
 /// Neighbours per particle and candidates per neighbour of the cell list on `sim`'s
-/// particles with their support radii; prints each grid level's share of the candidates.
+/// particles with their support radii; prints each grid level's share of the candidates,
+/// and the time of one search with cells of 1, 1/2, 1/3 and 1/4 of each level's largest
+/// radius (the default is [`sph_core::DEFAULT_CELL_FRACTION`]).
 fn search_cost<D: sph_core::Dimension>(sim: &Simulation<D, KernelChoice>) -> (f64, f64) {
     let p = &sim.state.particles;
-    let mut grid = CellList::new();
     let support = ScalarSupport::new(&p.smoothing_length).expect("radii");
+    for fraction in [1.0, 0.5, 1.0 / 3.0, 0.25] {
+        let mut grid = CellList::new().with_cell_fraction(fraction);
+        let t0 = Instant::now();
+        let list = grid.neighbors(&p.position, &support).expect("search");
+        let wall = t0.elapsed().as_secs_f64();
+        println!(
+            "  cells of {fraction:.2} × the level's largest radius: one search {wall:.3} s, \
+             {:.2} candidates per neighbour",
+            grid.candidates() as f64 / list.total_pairs() as f64
+        );
+    }
+    let mut grid = CellList::new();
     let list = grid.neighbors(&p.position, &support).expect("search");
     let pairs = list.total_pairs() as f64;
     for (k, level) in grid.level_stats().iter().enumerate() {
         println!(
-            "  grid level {k}: cell {:.3e} m, {} particles, {:.1} % of the candidates",
+            "  grid level {k}: cell {:.3e} m, {} particles, {}, {:.1} % of the candidates",
             level.cell_size,
             level.particles,
+            if level.dense { "dense" } else { "sparse" },
             100.0 * level.candidates as f64 / grid.candidates() as f64
         );
     }
@@ -167,9 +183,36 @@ fn run_case(case: &Case) {
     }
 }
 
+/// Builds the case's scene and times ten neighbour searches on its initial particles
+/// (for profiling the search alone).
+fn search_only(case: &Case) {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../examples/scenes")
+        .join(case.file);
+    let scene = Scene::from_toml_file(&path).expect("scene");
+    let built = scene.build_scaled(case.resolution_scale).expect("build");
+    let SceneSimulation::ThreeD(sim) = built.simulation else {
+        println!("--search times the 3-D scene only");
+        return;
+    };
+    let p = &sim.state.particles;
+    let support = ScalarSupport::new(&p.smoothing_length).expect("radii");
+    let mut grid = CellList::new();
+    let t0 = Instant::now();
+    for _ in 0..10 {
+        grid.neighbors(&p.position, &support).expect("search");
+    }
+    println!(
+        "{} particles: one search {:.3} s",
+        p.len(),
+        t0.elapsed().as_secs_f64() / 10.0
+    );
+}
+
 fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();
     let quick = args.iter().any(|a| a == "--quick");
+    let search = args.iter().any(|a| a == "--search");
     let want = |name: &str| {
         let picked: Vec<&String> = args.iter().filter(|a| *a == "3d" || *a == "rz").collect();
         picked.is_empty() || picked.iter().any(|a| *a == name)
@@ -198,7 +241,11 @@ fn main() {
     ];
     for (name, case) in &cases {
         if want(name) {
-            run_case(case);
+            if search {
+                search_only(case);
+            } else {
+                run_case(case);
+            }
         }
     }
 }

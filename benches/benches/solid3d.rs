@@ -79,11 +79,12 @@ fn main() {
                 );
             }
             println!(
-                "{threads} thread(s): {:.3e} particle-steps/s, {:.3e} derivative evaluations/s ({:.3e} per core); phases: neighbours {:.0} %, EOS {:.0} %, gradients {:.0} %, pair loop {:.0} %, integration {:.0} %",
+                "{threads} thread(s): {:.3e} particle-steps/s, {:.3e} derivative evaluations/s ({:.3e} per core); phases: neighbours {:.0} %, pair set-up {:.0} %, EOS {:.0} %, gradients {:.0} %, pair loop {:.0} %, integration {:.0} %",
                 n * steps as f64 / wall,
                 t.derivative_evaluations as f64 / wall,
                 t.derivative_evaluations as f64 / wall / threads as f64,
                 100.0 * t.neighbours / tot,
+                    100.0 * t.setup / tot,
                 100.0 * t.eos / tot,
                 100.0 * t.gradients / tot,
                 100.0 * t.pairs / tot,

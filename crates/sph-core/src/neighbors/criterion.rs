@@ -16,6 +16,10 @@ pub trait PairCriterion<V: Vector>: Sync {
     }
     /// The largest distance at which particle i can reach a neighbour on its own.
     fn radius(&self, i: usize) -> f64;
+    /// True when [`Self::accepts`] is exactly |r| < max(radius(i), radius(j)) (as
+    /// `r.norm_squared() < max²`): a search that has already found |r| < radius(i) may
+    /// then skip the call (and its load of j's data).
+    const RADIUS_IS_EXACT: bool = false;
     /// Whether i and j interact, given r = x_i − x_j.
     fn accepts(&self, i: usize, j: usize, r: V) -> bool;
 }
@@ -47,6 +51,7 @@ impl<V: Vector> PairCriterion<V> for ScalarSupport<'_> {
     fn radius(&self, i: usize) -> f64 {
         self.h[i]
     }
+    const RADIUS_IS_EXACT: bool = true;
     #[inline]
     fn accepts(&self, i: usize, j: usize, r: V) -> bool {
         let s = self.h[i].max(self.h[j]);

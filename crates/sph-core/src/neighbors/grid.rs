@@ -2,10 +2,18 @@
 //!
 //! Particles are binned by search radius into levels of one octave each (level ℓ holds
 //! radii in (r_max/2^(ℓ+1), r_max/2^ℓ]; the last level takes everything smaller). Each
-//! level is a uniform grid with cell size equal to its largest radius, particles sorted
-//! by cell so that a row of cells along x is one contiguous slice. A particle of radius
-//! r_i visits, in each level of cell size c, the rows within max(r_i, c): every j of
-//! that level has r_j ≤ c, so every pair with |r_ij| < max(r_i, r_j) is found.
+//! level is a uniform grid with cells of a fixed fraction of its largest radius
+//! ([`DEFAULT_CELL_FRACTION`]), particles sorted by cell so that a row of cells along x
+//! is one contiguous slice.
+//!
+//! **Gather, then transpose.** A particle of radius r_i visits, in every level, only the
+//! cells within its own r_i, and keeps the accepted j with |r_ij| < r_i. A pair with
+//! r_j > |r_ij| ≥ r_i is missed by i but found by j's own gather, which then hands i to
+//! j's row ("one-sided"); rows are merged with these afterwards. Every accepted pair has
+//! |r_ij| < max(r_i, r_j), so it is found from at least one side. Searching each
+//! particle's own radius, not the largest radius of the level its neighbours sit in, is
+//! what keeps the candidates per neighbour near a uniform lattice's on variable-resolution
+//! bodies (docs/performance.md, "The scenes users run").
 //!
 //! A level whose bounding box would need more than a few cells per particle (points far
 //! outside the bulk) switches from a dense `cell_start` table to a sorted list of cell
@@ -21,6 +29,8 @@ use std::ops::Range;
 
 /// Default number of grid levels (radius ratios up to 2^(levels−1) are separated).
 pub const DEFAULT_MAX_LEVELS: usize = 5;
+/// Default cell size of a level as a fraction of the level's largest radius.
+pub const DEFAULT_CELL_FRACTION: f64 = 0.5;
 /// Cell coordinates beyond this (in cells) are refused: the domain is absurdly large
 /// for the smallest support radius.
 const MAX_CELL_COORD: f64 = 1.0e15;
@@ -28,7 +38,7 @@ const MAX_CELL_COORD: f64 = 1.0e15;
 /// Statistics of one grid level of the last build.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct LevelStats {
-    /// Cell size (the largest search radius in the level), m.
+    /// Cell size (a fraction of the largest search radius in the level), m.
     pub cell_size: f64,
     /// Particles in the level.
     pub particles: usize,
@@ -44,6 +54,7 @@ pub struct LevelStats {
 #[derive(Clone, Debug)]
 pub struct CellList {
     max_levels: usize,
+    cell_fraction: f64,
     stats: Vec<LevelStats>,
     /// Candidates whose distance the last build tested (particles of the visited cells).
     candidates: u64,
@@ -58,20 +69,30 @@ impl Default for CellList {
 impl CellList {
     /// A cell list with [`DEFAULT_MAX_LEVELS`] levels.
     pub fn new() -> Self {
-        Self {
-            max_levels: DEFAULT_MAX_LEVELS,
-            stats: Vec::new(),
-            candidates: 0,
-        }
+        Self::with_max_levels(DEFAULT_MAX_LEVELS)
     }
     /// A cell list with at most `levels` grid levels (at least 1; 1 gives the classic
     /// single grid with cells of the largest radius).
     pub fn with_max_levels(levels: usize) -> Self {
         Self {
             max_levels: levels.max(1),
+            cell_fraction: DEFAULT_CELL_FRACTION,
             stats: Vec::new(),
             candidates: 0,
         }
+    }
+    /// The same list with cells of `fraction` times each level's largest radius.
+    ///
+    /// # Panics
+    /// If `fraction` is not in [1/8, 4] (finer cells cost more rows than they save
+    /// candidates; coarser ones test most of a level).
+    pub fn with_cell_fraction(mut self, fraction: f64) -> Self {
+        assert!(
+            (0.125..=4.0).contains(&fraction),
+            "cell fraction {fraction} outside [0.125, 4]"
+        );
+        self.cell_fraction = fraction;
+        self
     }
     /// Statistics of the levels of the last build.
     pub fn level_stats(&self) -> &[LevelStats] {
@@ -112,41 +133,122 @@ impl<V: Vector> NeighborSearch<V> for CellList {
             let l = ((r_max / r).log2().floor().max(0.0) as usize).min(self.max_levels - 1);
             members[l].push(i as u32);
         }
+        let fraction = self.cell_fraction;
         let levels: Vec<Level<V>> = members
             .into_iter()
             .filter(|m| !m.is_empty())
-            .map(|m| Level::build(m, positions, &radius))
+            .map(|m| Level::build(m, positions, &radius, fraction))
             .collect::<Result<_, _>>()?;
         self.stats = levels.iter().map(Level::stats).collect();
 
-        // Each chunk of rows is searched by one task and kept as it is (no concatenation
-        // into one array, which would hold the indices twice at the peak).
-        let (chunks, candidates): (Vec<Chunk>, Vec<Vec<u64>>) = (0..n.div_ceil(CHUNK))
+        // Gather: each chunk of rows is searched by one task and kept as it is (no
+        // concatenation into one array, which would hold the indices twice at the peak),
+        // with the pairs it found for the other side only.
+        let gathered: Vec<Gathered> = (0..n.div_ceil(CHUNK))
             .into_par_iter()
             .map(|c| {
                 let range = c * CHUNK..((c + 1) * CHUNK).min(n);
                 let mut chunk = Chunk::with_rows(range.start, range.len());
                 let mut row = Vec::new();
+                let mut one_sided = Vec::new();
                 let mut candidates = vec![0u64; levels.len()];
                 for i in range {
                     row.clear();
                     for (level, tested) in levels.iter().zip(&mut candidates) {
-                        *tested += level.query(i, positions[i], radius[i], criterion, &mut row);
+                        *tested += level.query(
+                            i,
+                            positions[i],
+                            radius[i],
+                            criterion,
+                            &mut row,
+                            &mut one_sided,
+                        );
                     }
                     row.sort_unstable();
                     chunk.push_row(&row);
                 }
-                (chunk.finish(), candidates)
+                Gathered {
+                    chunk: chunk.finish(),
+                    one_sided,
+                    candidates,
+                }
             })
-            .unzip();
-        for per_chunk in &candidates {
-            for (stats, tested) in self.stats.iter_mut().zip(per_chunk) {
+            .collect();
+        for g in &gathered {
+            for (stats, tested) in self.stats.iter_mut().zip(&g.candidates) {
                 stats.candidates += tested;
             }
         }
         self.candidates = self.stats.iter().map(|s| s.candidates).sum();
-        Ok(NeighborList::from_chunks(chunks))
+        Ok(NeighborList::from_chunks(transpose_one_sided(gathered, n)))
     }
+}
+
+/// What one chunk's gather produced.
+struct Gathered {
+    chunk: Chunk,
+    /// (j, i): j is i's neighbour at |r_ij| ≥ r_j, so j's own gather missed i.
+    one_sided: Vec<(u32, u32)>,
+    /// Candidates tested, per level.
+    candidates: Vec<u64>,
+}
+
+/// Merges the one-sided pairs into the rows of the side that missed them. The pairs are
+/// bucketed by row with a stable counting sort over the chunks in order, so each bucket
+/// ascends and the result does not depend on the thread count.
+fn transpose_one_sided(gathered: Vec<Gathered>, n: usize) -> Vec<Chunk> {
+    let mut start = vec![0u32; n + 1];
+    for g in &gathered {
+        for &(j, _) in &g.one_sided {
+            start[j as usize + 1] += 1;
+        }
+    }
+    if start.iter().all(|&c| c == 0) {
+        return gathered.into_iter().map(|g| g.chunk).collect();
+    }
+    for k in 0..n {
+        start[k + 1] += start[k];
+    }
+    let mut fill = start.clone();
+    let mut extra = vec![0u32; start[n] as usize];
+    let mut chunks = Vec::with_capacity(gathered.len());
+    for g in gathered {
+        for &(j, i) in &g.one_sided {
+            extra[fill[j as usize] as usize] = i;
+            fill[j as usize] += 1;
+        }
+        chunks.push(g.chunk);
+    }
+    drop(fill);
+    chunks
+        .into_par_iter()
+        .map(|chunk| {
+            let first = chunk.first_row();
+            let rows = chunk.rows();
+            if start[first] == start[first + rows] {
+                return chunk;
+            }
+            let mut merged = Chunk::with_rows(first, rows);
+            let mut row = Vec::new();
+            for k in 0..rows {
+                let i = first + k;
+                let more = &extra[start[i] as usize..start[i + 1] as usize];
+                // Both ascend and are disjoint (a one-sided pair is not in the row that
+                // missed it): merge them.
+                row.clear();
+                let mut rest = more.iter().copied().peekable();
+                for j in chunk.row(k) {
+                    while let Some(m) = rest.next_if(|&m| m < j) {
+                        row.push(m);
+                    }
+                    row.push(j);
+                }
+                row.extend(rest);
+                merged.push_row(&row);
+            }
+            merged.finish()
+        })
+        .collect()
 }
 
 /// How a level finds the particles of a row of cells.
@@ -165,15 +267,23 @@ struct Level<V> {
     dims: [i64; 3],
     index: Vec<u32>,
     pos: Vec<V>,
+    /// Search radius per slot.
+    rad: Vec<f64>,
     lookup: Lookup,
 }
 
 impl<V: Vector> Level<V> {
-    fn build(members: Vec<u32>, positions: &[V], radius: &[f64]) -> Result<Self, CoreError> {
-        let cell = members
-            .iter()
-            .map(|&i| radius[i as usize])
-            .fold(0.0, f64::max);
+    fn build(
+        members: Vec<u32>,
+        positions: &[V],
+        radius: &[f64],
+        fraction: f64,
+    ) -> Result<Self, CoreError> {
+        let cell = fraction
+            * members
+                .iter()
+                .map(|&i| radius[i as usize])
+                .fold(0.0, f64::max);
         let inv_cell = 1.0 / cell;
         let mut lo = V::splat(f64::INFINITY);
         let mut hi = V::splat(f64::NEG_INFINITY);
@@ -243,6 +353,7 @@ impl<V: Vector> Level<V> {
             )
         };
         let pos = index.iter().map(|&i| positions[i as usize]).collect();
+        let rad = index.iter().map(|&i| radius[i as usize]).collect();
         Ok(Self {
             cell,
             inv_cell,
@@ -250,6 +361,7 @@ impl<V: Vector> Level<V> {
             dims,
             index,
             pos,
+            rad,
             lookup,
         })
     }
@@ -280,8 +392,9 @@ impl<V: Vector> Level<V> {
         }
     }
 
-    /// Appends to `out` the neighbours of particle i found in this level; returns the
-    /// candidates tested.
+    /// Appends to `out` the neighbours j of particle i in this level with |r_ij| < r_i,
+    /// and to `one_sided` those with |r_ij| ≥ r_j as (j, i); returns the candidates
+    /// tested.
     #[inline]
     fn query<C: PairCriterion<V>>(
         &self,
@@ -290,22 +403,22 @@ impl<V: Vector> Level<V> {
         ri: f64,
         crit: &C,
         out: &mut Vec<u32>,
+        one_sided: &mut Vec<(u32, u32)>,
     ) -> u64 {
-        let r = ri.max(self.cell);
         let mut lo = [0i64; 3];
         let mut hi = [0i64; 3];
         for k in 0..V::DIM {
             let x = xi.component(k) - self.origin.component(k);
             // A margin of 1e-6 cell guards the floor against round-off at cell faces.
-            let a = (((x - r) * self.inv_cell - 1e-6).floor()).max(0.0);
-            let b = (((x + r) * self.inv_cell + 1e-6).floor()).min((self.dims[k] - 1) as f64);
+            let a = (((x - ri) * self.inv_cell - 1e-6).floor()).max(0.0);
+            let b = (((x + ri) * self.inv_cell + 1e-6).floor()).min((self.dims[k] - 1) as f64);
             if a > b {
                 return 0;
             }
             lo[k] = a as i64;
             hi[k] = b as i64;
         }
-        let r2 = r * r;
+        let r2 = ri * ri;
         // Counted a row of cells at a time, off the inner loop; i itself is not a
         // candidate.
         let mut tested = 0u64;
@@ -320,8 +433,15 @@ impl<V: Vector> Level<V> {
                         continue;
                     }
                     let d = xi - self.pos[s];
-                    if d.norm_squared() < r2 && crit.accepts(i, j as usize, d) {
+                    let d2 = d.norm_squared();
+                    // |r| < r_i ≤ max(r_i, r_j) already decides an exact-radius criterion.
+                    if d2 < r2 && (C::RADIUS_IS_EXACT || crit.accepts(i, j as usize, d)) {
                         out.push(j);
+                        // j's gather tests the same d² (negation is exact) against r_j².
+                        let rj = self.rad[s];
+                        if d2 >= rj * rj {
+                            one_sided.push((j, i as u32));
+                        }
                     }
                 }
             }

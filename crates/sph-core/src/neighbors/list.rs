@@ -94,13 +94,19 @@ impl Chunk {
         self
     }
 
-    fn rows(&self) -> usize {
+    /// Index of the chunk's first row.
+    pub(crate) fn first_row(&self) -> usize {
+        self.first_row
+    }
+
+    /// Rows held.
+    pub(crate) fn rows(&self) -> usize {
         self.offsets.len() - 1
     }
 
     /// Row `k` of the chunk.
     #[inline]
-    fn row(&self, k: usize) -> Neighbors<'_> {
+    pub(crate) fn row(&self, k: usize) -> Neighbors<'_> {
         let mut pos = self.offsets[k] as usize;
         let len = get_varint(&self.bytes, &mut pos) as usize;
         Neighbors {

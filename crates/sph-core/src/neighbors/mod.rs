@@ -5,7 +5,9 @@
 //!   |H_j r_ij| < 1. Both are symmetric, so j is a neighbour of i exactly when i is one
 //!   of j, which momentum-conserving pair forces need.
 //! * [`CellList`]: a sorted-grid cell list with one grid level per octave of support
-//!   radius, so fine and coarse particles each search cells sized for them.
+//!   radius; each particle gathers within its own radius, and the pairs only the
+//!   larger side reaches are handed to the smaller one, so fine and coarse particles
+//!   each search a volume sized for them.
 //! * [`NeighborList`]: the result in compressed sparse rows (CSR), each row sorted by
 //!   index, self excluded. Built in parallel with rayon, identical for any thread count.
 //! * [`brute_force_neighbors`]: the O(N²) reference used by the tests.
@@ -15,7 +17,7 @@ mod grid;
 mod list;
 
 pub use criterion::{PairCriterion, ScalarSupport, TensorSupport};
-pub use grid::{CellList, DEFAULT_MAX_LEVELS, LevelStats};
+pub use grid::{CellList, DEFAULT_CELL_FRACTION, DEFAULT_MAX_LEVELS, LevelStats};
 pub use list::{NeighborList, Neighbors};
 
 use crate::error::CoreError;

@@ -27,9 +27,15 @@ fn radii(n: usize, seed: &[f64]) -> Vec<f64> {
     (0..n).map(|i| seed[i % seed.len()]).collect()
 }
 
-fn same_as_brute<V: Vector>(x: &[V], h: &[f64], levels: usize) -> Result<(), TestCaseError> {
+fn same_as_brute<V: Vector>(
+    x: &[V],
+    h: &[f64],
+    levels: usize,
+    fraction: f64,
+) -> Result<(), TestCaseError> {
     let crit = ScalarSupport::new(h).unwrap();
     let fast = CellList::with_max_levels(levels)
+        .with_cell_fraction(fraction)
         .neighbors(x, &crit)
         .unwrap();
     let slow = brute_force_neighbors(x, &crit).unwrap();
@@ -41,28 +47,33 @@ fn pt() -> impl Strategy<Value = (f64, f64, f64)> {
     (0.0f64..1.0, 0.0f64..1.0, 0.0f64..1.0)
 }
 
+/// Cell sizes as a fraction of a level's largest radius, over the allowed range.
+fn fraction() -> impl Strategy<Value = f64> {
+    prop::sample::select(vec![0.125, 0.3, 0.5, 1.0, 1.7, 4.0])
+}
+
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(64))]
 
     #[test]
     fn scalar_1d(raw in prop::collection::vec(pt(), 1..300), hs in prop::collection::vec(0.002f64..0.2, 1..8),
-                 dup in 0usize..5, far in 0usize..3, levels in 1usize..6) {
+                 dup in 0usize..5, far in 0usize..3, levels in 1usize..6, fraction in fraction()) {
         let x = cloud::<f64>(&raw, dup, far);
-        same_as_brute(&x, &radii(x.len(), &hs), levels)?;
+        same_as_brute(&x, &radii(x.len(), &hs), levels, fraction)?;
     }
 
     #[test]
     fn scalar_2d(raw in prop::collection::vec(pt(), 1..300), hs in prop::collection::vec(0.01f64..0.3, 1..8),
-                 dup in 0usize..5, far in 0usize..3, levels in 1usize..6) {
+                 dup in 0usize..5, far in 0usize..3, levels in 1usize..6, fraction in fraction()) {
         let x = cloud::<DVec2>(&raw, dup, far);
-        same_as_brute(&x, &radii(x.len(), &hs), levels)?;
+        same_as_brute(&x, &radii(x.len(), &hs), levels, fraction)?;
     }
 
     #[test]
     fn scalar_3d(raw in prop::collection::vec(pt(), 1..300), hs in prop::collection::vec(0.02f64..0.5, 1..8),
-                 dup in 0usize..5, far in 0usize..3, levels in 1usize..6) {
+                 dup in 0usize..5, far in 0usize..3, levels in 1usize..6, fraction in fraction()) {
         let x = cloud::<DVec3>(&raw, dup, far);
-        same_as_brute(&x, &radii(x.len(), &hs), levels)?;
+        same_as_brute(&x, &radii(x.len(), &hs), levels, fraction)?;
     }
 
     #[test]
@@ -70,7 +81,7 @@ proptest! {
         // Radii spanning 2^7: more octaves than levels, so the last level mixes sizes.
         let hs: Vec<f64> = exps.iter().map(|e| 0.4 * 2f64.powf(*e)).collect();
         let x = cloud::<DVec3>(&raw, 2, 1);
-        same_as_brute(&x, &radii(x.len(), &hs), 3)?;
+        same_as_brute(&x, &radii(x.len(), &hs), 3, 0.5)?;
     }
 
     #[test]
@@ -254,8 +265,9 @@ fn encoded_rows_take_under_two_bytes_per_neighbour_on_a_lattice() {
 }
 
 /// The candidates a build tests: at least the pairs it finds, and on a uniform lattice
-/// with one level of cells of the support radius the particles of the 27 cells about
-/// each one, about 27/(4π/3) ≈ 6.4 per neighbour.
+/// the particles of the cells within each one's radius r: with cells of r, about
+/// (3r)³/(4πr³/3) ≈ 6.4 per neighbour; with the default cells of r/2, (2.5r)³/(4πr³/3)
+/// ≈ 3.7 (fewer at the lattice's faces, where the spheres are cut).
 #[test]
 fn candidates_per_neighbour_on_a_lattice() {
     let side = 20;
@@ -269,12 +281,16 @@ fn candidates_per_neighbour_on_a_lattice() {
         })
         .collect();
     let h = vec![2.5; x.len()];
-    let mut grid = CellList::new();
-    let list = grid
-        .neighbors(&x, &ScalarSupport::new(&h).unwrap())
-        .unwrap();
-    let ratio = grid.candidates() as f64 / list.total_pairs() as f64;
-    println!("candidates per neighbour {ratio:.2}");
-    assert!(grid.candidates() >= list.total_pairs() as u64);
-    assert!((3.0..10.0).contains(&ratio), "{ratio}");
+    let ratio = |mut grid: CellList| {
+        let list = grid
+            .neighbors(&x, &ScalarSupport::new(&h).unwrap())
+            .unwrap();
+        assert!(grid.candidates() >= list.total_pairs() as u64);
+        grid.candidates() as f64 / list.total_pairs() as f64
+    };
+    let whole = ratio(CellList::new().with_cell_fraction(1.0));
+    let half = ratio(CellList::new());
+    println!("candidates per neighbour: cells of r {whole:.2}, of r/2 {half:.2}");
+    assert!((4.5..6.4).contains(&whole), "{whole}");
+    assert!((2.5..3.7).contains(&half), "{half}");
 }

@@ -221,23 +221,34 @@ fn viscosity_switch_factors<D: Dimension, P: PairKernel<D>>(
     }
 }
 
+/// What pass 1 must produce beyond ∇v and ∇P.
+#[derive(Clone, Copy, Debug, Default)]
+pub(crate) struct GradientOptions {
+    /// Linear-corrected ∇v, ∇P and ∇e (`gradient_correction`).
+    pub correct: bool,
+    /// A linear-corrected strain rate (`strain_rate_correction`, with stresses).
+    pub correct_strain: bool,
+    /// Keep the corrections M⁻ᵀ for the momentum equation (`momentum_correction`).
+    pub keep_correction: bool,
+    /// The grad-h factor Ω (`grad_h`); else Ω = 1 and its sums are skipped.
+    pub grad_h: bool,
+}
+
+impl GradientOptions {
+    /// Whether the moment matrix M (and its inverse) is needed.
+    fn needs_moments(&self) -> bool {
+        self.correct || self.correct_strain || self.keep_correction
+    }
+}
+
 /// Pass 1.
 pub(crate) fn gradients<D: Dimension, P: PairKernel<D>>(
     ext: &Extended<'_, D>,
     list: &NeighborList,
     pk: &P,
-    correct: bool,
-    correct_strain: bool,
-    keep_correction: bool,
+    options: GradientOptions,
 ) -> GradientSet<D> {
-    per_geometry!(gradients_in(
-        ext,
-        list,
-        pk,
-        correct,
-        correct_strain,
-        keep_correction
-    ))
+    per_geometry!(gradients_in(ext, list, pk, options))
 }
 
 /// [`gradients`] for one geometry (`RZ`), fixed at compile time.
@@ -245,10 +256,15 @@ fn gradients_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
     ext: &Extended<'_, D>,
     list: &NeighborList,
     pk: &P,
-    correct: bool,
-    correct_strain: bool,
-    keep_correction: bool,
+    options: GradientOptions,
 ) -> GradientSet<D> {
+    let GradientOptions {
+        correct,
+        correct_strain,
+        keep_correction,
+        grad_h,
+    } = options;
+    let moments = options.needs_moments();
     let rz = RZ;
     // The 2-D density of the pair sums: η = ρ r in RZ (ring masses per radian).
     let eta = |k: usize| {
@@ -272,7 +288,8 @@ fn gradients_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
         for j in list.neighbors(i) {
             let j = j as usize;
             let dx = ext.position[j] - xi;
-            let g = pk.grad(i, j, -dx);
+            let dist = dx.norm();
+            let g = pk.grad_at(i, j, -dx, dist);
             let vol = ext.mass[j] / eta(j);
             // A decoupled pair (fractured rock separating) shares no velocity gradient;
             // it still counts in M and ∇P, as in Spheral's FSISPH.
@@ -283,15 +300,25 @@ fn gradients_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
             if energy && ext.material[i] == ext.material[j] {
                 ge += g * ((ext.specific_energy[j] - ext.specific_energy[i]) * vol);
             }
-            m += D::Tensor::outer(dx, g) * vol;
-            dwdh += ext.mass[j] * pk.dw_dh_own(i, dx);
+            // M and the grad-h sum only where they are used (two of the loop's costliest
+            // terms: an outer product, and a kernel and its derivative).
+            if moments {
+                m += D::Tensor::outer(dx, g) * vol;
+            }
+            if grad_h {
+                dwdh += ext.mass[j] * pk.dw_dh_own_at(i, dx, dist);
+            }
         }
-        let omega = 1.0 + hi / (d * eta(i)) * dwdh;
+        let omega = if grad_h {
+            1.0 + hi / (d * eta(i)) * dwdh
+        } else {
+            1.0
+        };
         // L = L_raw M⁻¹ and ∇P = M⁻ᵀ ∇P_raw are exact for linear fields. A nearly
         // singular M (a particle with too few neighbours) keeps the raw estimates.
         // M⁻¹ when either use wants it: the continuity equation and reconstruction
         // (`correct`), and the strain rate that drives the deviatoric stress.
-        let inv = if correct || correct_strain || keep_correction {
+        let inv = if moments {
             well_conditioned_inverse(&m)
         } else {
             None
@@ -422,6 +449,8 @@ fn rates_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
     let damaged = !ext.damage.is_empty();
     let astress = scheme.artificial_stress;
     let use_astress = !ext.astress.is_empty();
+    // FSISPH's energy diffusion (its ∇e is read per pair only then).
+    let diffuse = scheme.energy_diffusion > 0.0 && !ext.specific_energy.is_empty();
     // The momentum equation's gradient corrections M⁻ᵀ of the real particles, when on.
     let momentum_corrections = match grads {
         Some(gr) if scheme.momentum_correction => Some(&gr.correction),
@@ -518,14 +547,16 @@ fn rates_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
                     )
                 };
                 l_pair = Some((gi.velocity, lj));
-                ge_pair = (
-                    gi.energy,
-                    if j < ext.n_real {
-                        src.energy
-                    } else {
-                        m.mul_vec(src.energy)
-                    },
-                );
+                if diffuse {
+                    ge_pair = (
+                        gi.energy,
+                        if j < ext.n_real {
+                            src.energy
+                        } else {
+                            m.mul_vec(src.energy)
+                        },
+                    );
+                }
                 let half = r * 0.5;
                 let dui = r_hat.dot(gi.velocity.mul_vec(-half));
                 let duj = r_hat.dot(lj.mul_vec(half));
@@ -743,7 +774,7 @@ fn rates_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
             // SolidFSISPHEvaluateDerivatives.cc): κ c_eff (ẽ_i − ẽ_j) η·∇W̄/(ρ̄ |η|²) with
             // ẽ the energies reconstructed to the midpoint (Spheral's limiter), c_eff = max(0, min(c̄,
             // c̄ + v_ij·r̂)) and η = r/h̄. Antisymmetric in (i, j), so Σ m e is unchanged.
-            if scheme.energy_diffusion > 0.0 && same_material && !ext.specific_energy.is_empty() {
+            if diffuse && same_material {
                 let (ei, ej) = (ext.specific_energy[i], ext.specific_energy[j]);
                 let half = r * 0.5;
                 let (ei_t, ej_t) = sph_riemann::spheral_reconstruct(

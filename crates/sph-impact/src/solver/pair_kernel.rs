@@ -20,6 +20,11 @@ pub(crate) trait PairKernel<D: Dimension>: Sync {
     fn h(&self, i: usize) -> f64;
     /// ∂W(r, h_i)/∂h with particle i's own support (for the grad-h factor).
     fn dw_dh_own(&self, i: usize, r: D::Vector) -> f64;
+    /// [`Self::dw_dh_own`] when |r| is already known (scalar supports need no more).
+    fn dw_dh_own_at(&self, i: usize, r: D::Vector, dist: f64) -> f64 {
+        let _ = dist;
+        self.dw_dh_own(i, r)
+    }
     /// W̄ at distance `d` along the pair axis `r_hat` (artificial-stress normaliser).
     fn w_at(&self, i: usize, j: usize, r_hat: D::Vector, d: f64) -> f64 {
         self.w(i, j, r_hat * d)
@@ -82,8 +87,12 @@ impl<D: Dimension, K: Kernel> PairKernel<D> for ScalarPairKernel<'_, K> {
     }
     #[inline]
     fn dw_dh_own(&self, i: usize, r: D::Vector) -> f64 {
+        <Self as PairKernel<D>>::dw_dh_own_at(self, i, r, r.norm())
+    }
+    #[inline]
+    fn dw_dh_own_at(&self, i: usize, _r: D::Vector, dist: f64) -> f64 {
         // W = σ h^(−d) f(r/h): ∂W/∂h = −σ h^(−d−1) (d f + q f').
-        let q = r.norm() * self.inv_h[i];
+        let q = dist * self.inv_h[i];
         let d = D::DIM as f64;
         -self.g_norm[i] * (d * self.kernel.f(q) + q * self.kernel.df(q))
     }

@@ -13,7 +13,7 @@ use crate::solver::damage::{
     fragment_densities, has_tensor_damage, tensor_damage_rates,
 };
 use crate::solver::derivatives::{
-    GradientSet, PairRates, Rates, gradients, rates, summation_density,
+    GradientOptions, GradientSet, PairRates, Rates, gradients, rates, summation_density,
 };
 use crate::solver::error::SolverError;
 use crate::solver::free_flight::{FreeFlight, leaving};
@@ -24,8 +24,8 @@ use crate::solver::timestep::{TimestepVote, acceleration_vote, cfl_vote, density
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 use sph_core::{
-    CellList, Dimension, NeighborList, NeighborSearch, Particles, ScalarSupport, Tensor,
-    TensorSupport, Vector,
+    CellList, Dimension, NeighborList, NeighborSearch, Particles, Permutation, ScalarSupport,
+    Tensor, TensorSupport, Vector,
 };
 use sph_damage::DamageForm;
 use sph_kernel::Kernel;
@@ -38,8 +38,12 @@ pub use checkpoint::SolverCheckpoint;
 /// Wall-clock seconds spent per phase, and the work done.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
 pub struct PhaseTimes {
-    /// Ghosts + neighbour search.
+    /// The neighbour search itself (`CellList::neighbors`).
     pub neighbours: f64,
+    /// The pair arrays around it: supports, moduli, ghosts, RZ radii, summation density
+    /// and artificial stresses.
+    #[serde(default)]
+    pub setup: f64,
     /// Equation-of-state evaluations.
     pub eos: f64,
     /// Gradient pass.
@@ -55,7 +59,7 @@ pub struct PhaseTimes {
 impl PhaseTimes {
     /// Total of the phases.
     pub fn total(&self) -> f64 {
-        self.neighbours + self.eos + self.gradients + self.pairs + self.integration
+        self.neighbours + self.setup + self.eos + self.gradients + self.pairs + self.integration
     }
 }
 
@@ -304,6 +308,36 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
         Ok(())
     }
 
+    /// Reorders the particles (`perm[new] = old`), every per-particle field with them
+    /// (state, flaws' indices, held flags, RZ set-up radii). Sorting them along a
+    /// space-filling curve ([`sph_core::morton_order`]) puts neighbours close in memory,
+    /// which the pair loops read at random otherwise. The order changes which pair
+    /// sums come first, so results differ from another order's at round-off; for a
+    /// given order they are identical for any thread count.
+    ///
+    /// Errors if `perm` does not have one entry per particle or particles are in free
+    /// flight (they have left the arrays).
+    pub fn reorder_particles(&mut self, perm: &Permutation) -> Result<(), SolverError> {
+        let n = self.state.particles.len();
+        if perm.len() != n || self.flight.len() > 0 {
+            return Err(SolverError::BadConfig {
+                field: "reorder_particles",
+                value: perm.len() as f64,
+                reason: "the permutation must cover every particle, none in free flight",
+            });
+        }
+        self.state.reorder(perm);
+        if !self.radius0.is_empty() {
+            perm.apply("radius0", &mut self.radius0)?;
+        }
+        if !self.held.is_empty() {
+            perm.apply("held", &mut self.held)?;
+        }
+        // The midpoint's storage is refilled from the state at each step.
+        self.midpoint = State::default();
+        Ok(())
+    }
+
     /// Damage D of every particle (0 for particles without a damage model).
     pub fn damage(&self) -> Vec<f64> {
         let d = damage_of(&self.state, &self.materials);
@@ -515,6 +549,7 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
                 }
             }
         }
+        let t_search = Instant::now();
         let list = if ext.h_tensor.is_empty() {
             self.search
                 .neighbors(&ext.position, &ScalarSupport::new(&ext.h)?)?
@@ -522,6 +557,7 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
             self.search
                 .neighbors(&ext.position, &TensorSupport::new(&ext.h_tensor)?)?
         };
+        let search = t_search.elapsed().as_secs_f64();
         if self.scheme.density == DensityForm::Summation {
             // Density from the positions, then the EOS again with it (real and ghosts).
             let rho = if ext.h_tensor.is_empty() {
@@ -579,12 +615,15 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
             || self.scheme.viscosity.switch != sph_riemann::ViscositySwitch::None
             || self.scheme.energy_diffusion > 0.0
             || !state.stress.is_empty();
-        let correct = self.scheme.gradient_correction;
-        let correct_strain = self.scheme.strain_rate_correction && !state.stress.is_empty();
-        let keep = self.scheme.momentum_correction;
+        let options = GradientOptions {
+            correct: self.scheme.gradient_correction,
+            correct_strain: self.scheme.strain_rate_correction && !state.stress.is_empty(),
+            keep_correction: self.scheme.momentum_correction,
+            grad_h: self.scheme.grad_h,
+        };
         let (grads, rates_out, t3) = if ext.h_tensor.is_empty() {
             let pk = ScalarPairKernel::new(self.kernel, &ext.h, D::DIM);
-            let g = need_grads.then(|| gradients(&ext, &list, &pk, correct, correct_strain, keep));
+            let g = need_grads.then(|| gradients(&ext, &list, &pk, options));
             let t3 = Instant::now();
             let r = rates(&ext, &list, &pk, g.as_ref(), &self.scheme);
             (g, r, t3)
@@ -594,7 +633,7 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
                 h_tensor: &ext.h_tensor,
                 h: &ext.h,
             };
-            let g = need_grads.then(|| gradients(&ext, &list, &pk, correct, correct_strain, keep));
+            let g = need_grads.then(|| gradients(&ext, &list, &pk, options));
             let t3 = Instant::now();
             let r = rates(&ext, &list, &pk, g.as_ref(), &self.scheme);
             (g, r, t3)
@@ -670,7 +709,8 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
         let tensor_rates = tensor_damage_rates(state, &self.materials, &damage_input);
         let t4 = Instant::now();
         self.timings.eos += (t1 - t0).as_secs_f64();
-        self.timings.neighbours += (t2 - t1).as_secs_f64();
+        self.timings.neighbours += search;
+        self.timings.setup += (t2 - t1).as_secs_f64() - search;
         self.timings.gradients += (t3 - t2).as_secs_f64();
         self.timings.pairs += (t4 - t3).as_secs_f64();
         self.timings.derivative_evaluations += n_real as u64;

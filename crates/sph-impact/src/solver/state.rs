@@ -2,7 +2,7 @@
 
 use crate::solver::boundary::{Boundary, Ghost};
 use serde::{Deserialize, Serialize};
-use sph_core::{Dimension, Particles, Tensor};
+use sph_core::{Dimension, Particles, Permutation, Tensor};
 
 /// What the integrator evolves: the particles (x, v, m, ρ, e, h, material, id), the
 /// ASPH tensors when in use, and the initial spacing (for the artificial stress).
@@ -212,6 +212,22 @@ impl<D: Dimension> State<D> {
             }
         }
         Self::zip_fields(self, other, &mut Append);
+    }
+
+    /// Reorders every per-particle field with `perm` (`perm[new] = old`); fields that
+    /// are empty (a model not in use) stay empty.
+    pub(crate) fn reorder(&mut self, perm: &Permutation) {
+        struct Reorder<'p>(&'p Permutation);
+        impl FieldOp for Reorder<'_> {
+            fn apply<T: Clone>(&mut self, a: &mut Vec<T>, _: &mut Vec<T>) {
+                if !a.is_empty() {
+                    self.0
+                        .apply("state field", a)
+                        .expect("a field in use has one entry per particle");
+                }
+            }
+        }
+        Self::zip_fields(self, &mut State::default(), &mut Reorder(perm));
     }
 
     /// Keeps the first `n` particles (undoes an [`Self::append`]).
