@@ -207,6 +207,22 @@ fn search_only(case: &Case) {
         p.len(),
         t0.elapsed().as_secs_f64() / 10.0
     );
+    for skin in [1.05, 1.1, 1.2] {
+        let h: Vec<f64> = p.smoothing_length.iter().map(|h| h * skin).collect();
+        let support = ScalarSupport::new(&h).expect("radii");
+        let t0 = Instant::now();
+        let mut pairs = 0;
+        for _ in 0..10 {
+            pairs = grid
+                .neighbors(&p.position, &support)
+                .expect("search")
+                .total_pairs();
+        }
+        println!(
+            "  radii × {skin}: one search {:.3} s, {pairs} pairs",
+            t0.elapsed().as_secs_f64() / 10.0
+        );
+    }
 }
 
 fn main() {
