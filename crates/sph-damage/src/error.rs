@@ -56,6 +56,14 @@ pub enum DamageError {
         /// The broken invariant.
         reason: &'static str,
     },
+    /// A user's damage model ([`crate::BodyDamage`]) could not be built or used.
+    #[error("damage model {model}: {message}")]
+    Custom {
+        /// The model's name.
+        model: String,
+        /// What went wrong, in the model's words.
+        message: String,
+    },
 }
 
 /// Checks that `value` is finite and strictly positive.

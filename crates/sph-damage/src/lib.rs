@@ -55,6 +55,7 @@
 
 pub mod activation;
 pub mod benz_asphaug;
+pub mod body;
 pub mod choice;
 pub mod coupling;
 pub mod decoupling;
@@ -71,6 +72,7 @@ pub mod weibull;
 
 pub use activation::ActivationStrain;
 pub use benz_asphaug::{BenzAsphaug, BenzAsphaugParams, CRACK_SPEED_FRACTION_BA94, GrowthLaw};
+pub use body::{BodyDamage, BodyParticles};
 pub use choice::BuiltinDamage;
 pub use coupling::{StressCoupling, fsisph_factor, pair_is_tensile, pair_max_factor};
 pub use elastic::{longitudinal_wave_speed, poisson_ratio, youngs_modulus};

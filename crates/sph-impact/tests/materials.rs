@@ -303,7 +303,7 @@ fn shear_failure_is_added_to_a_base_damage_model_and_checked() {
     let expected = b
         .damage
         .with_shear_failure(sph_damage::PlasticFailure::ROCK_COLLINS2004);
-    assert_eq!(Some(m.damage), expected);
+    assert_eq!(Some(m.damage.clone()), expected);
     assert_eq!(b.damage.shear_failure(), None);
     // It round-trips, and reaches the solver's material.
     let back = MaterialSpec::from_toml_str(&m.to_toml().unwrap(), "back.toml").unwrap();
@@ -745,6 +745,101 @@ fn user_models_plug_in() {
     .validate()
     .unwrap_err();
     assert_eq!(e.field(), Some("density"));
+}
+
+/// A user's damage recipe: the built-in maximum tensile stress at σ_b, counting the
+/// bodies it was built for (to show it is called once per body, with that body's
+/// particles).
+#[derive(Debug, Default)]
+struct UserThreshold {
+    bodies: std::sync::Mutex<Vec<(usize, u64)>>,
+}
+
+impl sph_damage::BodyDamage for UserThreshold {
+    fn name(&self) -> &str {
+        "user-threshold"
+    }
+    fn build(
+        &self,
+        body: &sph_damage::BodyParticles<'_>,
+    ) -> Result<std::sync::Arc<dyn sph_damage::DamageModel>, DamageError> {
+        self.bodies
+            .lock()
+            .unwrap()
+            .push((body.volumes.len(), body.seed));
+        Ok(std::sync::Arc::new(sph_damage::MaxTensileStress::new(
+            5.0e6,
+        )?))
+    }
+    fn static_strength(&self, _youngs_modulus: f64, _volume: f64) -> Option<f64> {
+        Some(5.0e6)
+    }
+}
+
+#[test]
+fn a_user_damage_model_plugs_in_per_body() {
+    let recipe = std::sync::Arc::new(UserThreshold::default());
+    let mut m = MaterialSpec::basalt_study();
+    m.damage = DamageSpec::Custom(recipe.clone());
+    m.validate().unwrap();
+    assert!(!m.damage.is_builtin());
+    assert_eq!(m.damage.name(), "user-threshold");
+    assert!(
+        m.describe()
+            .contains("damage    user-threshold (user-defined)")
+    );
+    assert!(table(std::slice::from_ref(&m)).contains("user-defined"));
+    assert_eq!(m.damage.static_strength(5e10, 1.0), Some(5.0e6));
+    assert!(matches!(
+        m.to_toml().unwrap_err(),
+        MaterialError::NotSerializable {
+            component: "damage model",
+            ..
+        }
+    ));
+    // Equal by identity: a clone holds the same recipe, another recipe is different.
+    assert_eq!(m.damage.clone(), m.damage);
+    assert_ne!(DamageSpec::custom(UserThreshold::default()), m.damage);
+    assert_ne!(m.damage, MaterialSpec::basalt_study().damage);
+    // The built-in path refuses it with the model's name; the per-body path builds it.
+    assert!(
+        m.damage
+            .build(&[1e-9; 3], 1)
+            .unwrap_err()
+            .to_string()
+            .contains("user-threshold")
+    );
+    let solver = m
+        .body_material(&[1e-9; 3], (7, 3), sph_damage::DamageVariable::CubeRoot)
+        .unwrap();
+    assert_eq!(solver.damage.as_ref().unwrap().name(), "max-tensile-stress");
+    assert_eq!(*recipe.bodies.lock().unwrap(), vec![(3, 7)]);
+    // In a scene: the recipe is called once, for the body that uses it, and its model
+    // runs in the solver.
+    recipe.bodies.lock().unwrap().clear();
+    let scene = sph_impact::scene::SceneBuilder::new(2.0e-7)
+        .body(
+            "block",
+            sph_impact::scene::ShapeSpec::Cuboid {
+                min: [0.0; 3],
+                max: [2.0e-3; 3],
+            },
+            m.clone(),
+            sph_impact::scene::PlacementSpec::Lattice { spacing: 0.5e-3 },
+        )
+        .velocity([0.0, 0.0, 100.0])
+        .build()
+        .unwrap();
+    let built = scene.build().unwrap();
+    assert_eq!(recipe.bodies.lock().unwrap().len(), 1);
+    assert_eq!(
+        recipe.bodies.lock().unwrap()[0].0,
+        built.bodies[0].particles
+    );
+    let sph_impact::scene::SceneSimulation::ThreeD(mut sim) = built.simulation else {
+        panic!("3-D");
+    };
+    sim.step(f64::INFINITY).unwrap();
 }
 
 #[test]

@@ -4,13 +4,18 @@
 //! builder turns them into a model per body with [`DamageSpec::build`].
 
 use sph_damage::{
-    ActivationStrain, BenzAsphaug, BenzAsphaugParams, BuiltinDamage, CRACK_SPEED_FRACTION_BA94,
-    DamageError, DamageForm, DamageVariable, FlawTail, GrowthLaw, MaxTensileStress, NoDamage,
-    PlasticFailure, TensileFailure, WeibullParams,
+    ActivationStrain, BenzAsphaug, BenzAsphaugParams, BodyDamage, BodyParticles, BuiltinDamage,
+    CRACK_SPEED_FRACTION_BA94, DamageError, DamageForm, DamageModel, DamageVariable, FlawTail,
+    GrowthLaw, MaxTensileStress, NoDamage, PlasticFailure, TensileFailure, WeibullParams,
 };
+use std::sync::Arc;
 
 /// The damage model of a material (paper §3.3).
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
+///
+/// The built-in variants can be written to and read from TOML; [`DamageSpec::Custom`]
+/// holds a user's model (a [`BodyDamage`] recipe from their own crate) and exists in
+/// code only, like a custom equation of state or strength model.
+#[derive(Clone, Debug, Default)]
 pub enum DamageSpec {
     /// No damage.
     #[default]
@@ -48,9 +53,77 @@ pub enum DamageSpec {
         /// (sph_damage::shear_failure; scalar form only), or none.
         shear: Option<PlasticFailure>,
     },
+    /// A user's damage model, built per body by its recipe.
+    Custom(Arc<dyn BodyDamage>),
+}
+
+impl PartialEq for DamageSpec {
+    /// Built-in variants compare by value; custom recipes by identity (the same `Arc`).
+    fn eq(&self, other: &Self) -> bool {
+        match (self, other) {
+            (Self::None, Self::None) => true,
+            (
+                Self::MaxTensileStress {
+                    sigma_b: a,
+                    failure: b,
+                    crack_speed_fraction: c,
+                    shear: d,
+                },
+                Self::MaxTensileStress {
+                    sigma_b: a2,
+                    failure: b2,
+                    crack_speed_fraction: c2,
+                    shear: d2,
+                },
+            ) => a == a2 && b == b2 && c == c2 && d == d2,
+            (
+                Self::BenzAsphaug {
+                    k,
+                    m,
+                    crack_speed_fraction,
+                    growth,
+                    tail,
+                    strain,
+                    form,
+                    shear,
+                },
+                Self::BenzAsphaug {
+                    k: k2,
+                    m: m2,
+                    crack_speed_fraction: c2,
+                    growth: g2,
+                    tail: t2,
+                    strain: s2,
+                    form: f2,
+                    shear: sh2,
+                },
+            ) => {
+                k == k2
+                    && m == m2
+                    && crack_speed_fraction == c2
+                    && growth == g2
+                    && tail == t2
+                    && strain == s2
+                    && form == f2
+                    && shear == sh2
+            }
+            (Self::Custom(a), Self::Custom(b)) => Arc::ptr_eq(a, b),
+            _ => false,
+        }
+    }
 }
 
 impl DamageSpec {
+    /// A user's damage model (see [`BodyDamage`]).
+    pub fn custom(recipe: impl BodyDamage + 'static) -> Self {
+        Self::Custom(Arc::new(recipe))
+    }
+
+    /// False for [`DamageSpec::Custom`], which material files cannot describe.
+    pub fn is_builtin(&self) -> bool {
+        !matches!(self, Self::Custom(_))
+    }
+
     /// Maximum tensile stress at σ_b (Pa) with crack growth at 0.4 c_L.
     pub fn max_tensile_stress(sigma_b: f64) -> Self {
         Self::MaxTensileStress {
@@ -85,11 +158,12 @@ impl DamageSpec {
 
     /// The same model with shear failure added (Collins et al. 2004;
     /// sph_damage::shear_failure); `None` for [`DamageSpec::None`], which has no damage
-    /// for it to raise.
-    pub fn with_shear_failure(self, law: PlasticFailure) -> Option<Self> {
-        let mut out = self;
+    /// for it to raise, and for a custom model, which adds its own
+    /// ([`BodyDamage::shear_failure`]).
+    pub fn with_shear_failure(&self, law: PlasticFailure) -> Option<Self> {
+        let mut out = self.clone();
         match &mut out {
-            Self::None => return None,
+            Self::None | Self::Custom(_) => return None,
             Self::MaxTensileStress { shear, .. } | Self::BenzAsphaug { shear, .. } => {
                 *shear = Some(law)
             }
@@ -99,18 +173,21 @@ impl DamageSpec {
 
     /// The shear-failure law, if the model has one.
     pub fn shear_failure(&self) -> Option<PlasticFailure> {
-        match *self {
+        match self {
             Self::None => None,
-            Self::MaxTensileStress { shear, .. } | Self::BenzAsphaug { shear, .. } => shear,
+            Self::MaxTensileStress { shear, .. } | Self::BenzAsphaug { shear, .. } => *shear,
+            Self::Custom(recipe) => recipe.shear_failure(),
         }
     }
 
-    /// Model name as in material files: `none`, `max-tensile-stress`, `benz-asphaug`.
-    pub fn name(&self) -> &'static str {
+    /// Model name as in material files: `none`, `max-tensile-stress`, `benz-asphaug`;
+    /// a custom model's own name.
+    pub fn name(&self) -> &str {
         match self {
             Self::None => "none",
             Self::MaxTensileStress { .. } => "max-tensile-stress",
             Self::BenzAsphaug { .. } => "benz-asphaug",
+            Self::Custom(recipe) => recipe.name(),
         }
     }
 
@@ -118,7 +195,8 @@ impl DamageSpec {
     /// field (`sigma_b`, `k`, `m`, `crack_speed_fraction`).
     pub fn validate(&self) -> Result<(), DamageError> {
         match *self {
-            Self::None => Ok(()),
+            // A custom recipe checks its parameters when it is built.
+            Self::None | Self::Custom(_) => Ok(()),
             Self::MaxTensileStress {
                 sigma_b,
                 failure,
@@ -161,6 +239,7 @@ impl DamageSpec {
             Self::BenzAsphaug { k, m, .. } => {
                 Some(sph_damage::static_strength(youngs_modulus, k, m, volume))
             }
+            Self::Custom(ref recipe) => recipe.static_strength(youngs_modulus, volume),
         }
     }
 
@@ -190,6 +269,12 @@ impl DamageSpec {
         dealt_over: usize,
     ) -> Result<BuiltinDamage, DamageError> {
         match *self {
+            Self::Custom(ref recipe) => Err(DamageError::Custom {
+                model: recipe.name().to_owned(),
+                message: "a custom model is built by DamageSpec::build_model, not as a \
+                          built-in"
+                    .to_owned(),
+            }),
             Self::None => Ok(BuiltinDamage::None(NoDamage)),
             Self::MaxTensileStress {
                 sigma_b,
@@ -222,6 +307,24 @@ impl DamageSpec {
                     BenzAsphaug::seed_with_volumes_dealt(params, particle_volumes, dealt_over)?,
                 ))
             }
+        }
+    }
+
+    /// The model for one body, built-in or custom: what the scene builder hands the
+    /// solver ([`Self::build_with_variable`] for the built-in ones, the recipe's
+    /// [`BodyDamage::build`] for a custom one).
+    pub fn build_model(
+        &self,
+        body: &BodyParticles<'_>,
+    ) -> Result<Arc<dyn DamageModel>, DamageError> {
+        match self {
+            Self::Custom(recipe) => recipe.build(body),
+            _ => Ok(Arc::new(self.build_with_variable(
+                body.volumes,
+                body.seed,
+                body.variable,
+                body.stands_for,
+            )?)),
         }
     }
 }

@@ -75,11 +75,10 @@ impl MaterialSpec {
             Some(s) => writeln!(w, "  strength  {}: {}", self.strength.name(), params(&s)),
             None => writeln!(w, "  strength  {} (user-defined)", self.strength.name()),
         };
-        let d = damage_section(&self.damage);
-        let _ = if d.params.is_empty() {
-            writeln!(w, "  damage    {}", self.damage.name())
-        } else {
-            writeln!(w, "  damage    {}: {}", self.damage.name(), params(&d))
+        let _ = match damage_section(&self.damage) {
+            Some(d) if d.params.is_empty() => writeln!(w, "  damage    {}", self.damage.name()),
+            Some(d) => writeln!(w, "  damage    {}: {}", self.damage.name(), params(&d)),
+            None => writeln!(w, "  damage    {} (user-defined)", self.damage.name()),
         };
         let _ = match &self.thermal {
             Some(t) => writeln!(
@@ -162,10 +161,13 @@ impl MaterialSpec {
                 )
             }
         };
-        let damage = match self.damage {
+        let damage = match &self.damage {
             DamageSpec::None => String::new(),
-            DamageSpec::MaxTensileStress { sigma_b, .. } => format!("sigma_b {} MPa", mpa(sigma_b)),
+            DamageSpec::MaxTensileStress { sigma_b, .. } => {
+                format!("sigma_b {} MPa", mpa(*sigma_b))
+            }
             DamageSpec::BenzAsphaug { k, m, .. } => format!("k {k:e} m^-3, m {m}"),
+            DamageSpec::Custom(_) => "user-defined".to_owned(),
         };
         match (strength.is_empty(), damage.is_empty()) {
             (false, false) => format!("{strength}; {damage}"),

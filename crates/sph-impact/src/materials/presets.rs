@@ -117,7 +117,8 @@ pub(crate) fn presets(kind: PresetKind) -> Vec<(String, Section)> {
                 .map(|n| {
                     (
                         n.name.to_owned(),
-                        damage_section(&DamageSpec::benz_asphaug_weibull(n.params)),
+                        damage_section(&DamageSpec::benz_asphaug_weibull(n.params))
+                            .expect("a built-in model"),
                     )
                 })
                 .collect();
@@ -126,11 +127,13 @@ pub(crate) fn presets(kind: PresetKind) -> Vec<(String, Section)> {
                 damage_section(&DamageSpec::benz_asphaug(
                     GRANITE_WEIBULL_K,
                     GRANITE_WEIBULL_M,
-                )),
+                ))
+                .expect("a built-in model"),
             ));
             v.push((
                 "aluminium-2024-study".into(),
-                damage_section(&DamageSpec::max_tensile_stress(2500.0e6)),
+                damage_section(&DamageSpec::max_tensile_stress(2500.0e6))
+                    .expect("a built-in model"),
             ));
             v
         }
@@ -199,7 +202,7 @@ mod tests {
         }
         for (name, sec) in presets(PresetKind::Damage) {
             let d = build_damage(&sec, &cx("damage")).unwrap_or_else(|e| panic!("{name}: {e}"));
-            assert_eq!(damage_section(&d), sec, "{name}");
+            assert_eq!(damage_section(&d).unwrap(), sec, "{name}");
         }
         for (name, sec) in presets(PresetKind::Thermal) {
             let t = build_thermal(&sec, &cx("thermal")).unwrap_or_else(|e| panic!("{name}: {e}"));

@@ -253,21 +253,22 @@ pub(crate) fn strength_section(strength: &StrengthChoice) -> Option<Section> {
     })
 }
 
-/// The damage model's parameters.
-pub(crate) fn damage_section(damage: &DamageSpec) -> Section {
-    let sec = damage_model_section(damage);
-    match damage.shear_failure() {
+/// The damage model's parameters; `None` for a user-defined model.
+pub(crate) fn damage_section(damage: &DamageSpec) -> Option<Section> {
+    let sec = damage_model_section(damage)?;
+    Some(match damage.shear_failure() {
         Some(law) => sec
             .num("shear_min_strain", law.min_strain())
             .num("shear_pressure_slope", law.pressure_slope())
             .num("shear_pressure_offset", law.pressure_offset()),
         None => sec,
-    }
+    })
 }
 
 /// The damage model's own parameters (without shear failure).
-fn damage_model_section(damage: &DamageSpec) -> Section {
-    match *damage {
+fn damage_model_section(damage: &DamageSpec) -> Option<Section> {
+    Some(match *damage {
+        DamageSpec::Custom(_) => return None,
         DamageSpec::None => Section::new(Some("none")),
         DamageSpec::MaxTensileStress {
             sigma_b,
@@ -295,7 +296,7 @@ fn damage_model_section(damage: &DamageSpec) -> Section {
             .name("tail", name_of(&FLAW_TAILS, tail))
             .name("strain", name_of(&ACTIVATION_STRAINS, strain))
             .name("form", name_of(&DAMAGE_FORMS, form)),
-    }
+    })
 }
 
 /// The thermal model's parameters.

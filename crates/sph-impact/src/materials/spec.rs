@@ -187,12 +187,12 @@ impl MaterialSpec {
     ) -> Result<crate::Material, sph_damage::DamageError> {
         let mut m = self.solver_material();
         if self.damage != crate::materials::DamageSpec::None {
-            m.damage = Some(std::sync::Arc::new(self.damage.build_with_variable(
-                particle_volumes,
+            m.damage = Some(self.damage.build_model(&sph_damage::BodyParticles {
+                volumes: particle_volumes,
                 seed,
                 variable,
-                dealt_over,
-            )?));
+                stands_for: dealt_over,
+            })?);
             m.shear_failure = self.damage.shear_failure();
         }
         Ok(m)

@@ -320,7 +320,7 @@ impl Reader<'_> {
         let raw = file
             .damage
             .map(|t| (t.span(), t.into_inner().into_entries()));
-        let base_sec = base.as_ref().map(|b| damage_section(&b.damage));
+        let base_sec = base.as_ref().and_then(|b| damage_section(&b.damage));
         let damage = match self.resolve(PresetKind::Damage, raw, base_sec, &base_span)? {
             Some(r) => build_damage(&r.sec, &self.cx("damage", &r))?,
             None => DamageSpec::None,

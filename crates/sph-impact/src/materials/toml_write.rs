@@ -30,6 +30,8 @@ impl MaterialSpec {
         let eos = eos_section(&self.eos).ok_or_else(|| not_serializable("EOS"))?;
         let strength =
             strength_section(&self.strength).ok_or_else(|| not_serializable("strength model"))?;
+        let damage =
+            damage_section(&self.damage).ok_or_else(|| not_serializable("damage model"))?;
 
         let mut out = String::new();
         let w = &mut out;
@@ -51,7 +53,7 @@ impl MaterialSpec {
         }
         write_section(w, "eos", &eos);
         write_section(w, "strength", &strength);
-        write_section(w, "damage", &damage_section(&self.damage));
+        write_section(w, "damage", &damage);
         if let Some(t) = &self.thermal {
             write_section(w, "thermal", &thermal_section(t));
         }
