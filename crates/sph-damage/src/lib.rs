@@ -65,6 +65,7 @@ pub mod flaw_tail;
 pub mod model;
 pub mod none;
 pub mod params;
+pub mod pressure;
 pub mod shear_failure;
 pub mod tensile;
 pub mod tensor;
@@ -75,7 +76,7 @@ pub use benz_asphaug::{BenzAsphaug, BenzAsphaugParams, CRACK_SPEED_FRACTION_BA94
 pub use body::{BodyDamage, BodyParticles};
 pub use choice::BuiltinDamage;
 pub use coupling::{StressCoupling, fsisph_factor, pair_is_tensile, pair_max_factor};
-pub use elastic::{longitudinal_wave_speed, poisson_ratio, youngs_modulus};
+pub use elastic::{longitudinal_speed, longitudinal_wave_speed, poisson_ratio, youngs_modulus};
 pub use error::DamageError;
 pub use flaw_tail::FlawTail;
 pub use model::{
@@ -84,6 +85,7 @@ pub use model::{
 };
 pub use none::NoDamage;
 pub use params::{NamedWeibull, WeibullParams};
+pub use pressure::damaged_pressure;
 pub use shear_failure::PlasticFailure;
 pub use tensile::{MaxTensileStress, TensileFailure};
 pub use tensor::{DamageForm, DirectionalGrowth, GrowthOutcome};

@@ -1,5 +1,6 @@
-//! Damage in the solver (paper §2, §3.3): the damaged pressure P_D, the per-stage damage
-//! evaluation and the bounded update of the integrated variable s = D^(1/p).
+//! Damage in the solver (paper §2, §3.3): the per-stage damage evaluation and the
+//! bounded update of the integrated variable s = D^(1/p); the damaged pressure P_D is
+//! sph-damage's (`sph_damage::damaged_pressure`).
 //!
 //! Damage weakens tension and shear only: σ = (1 − D) S − P_D I with P_D = (1 − D) P
 //! for P < 0 and P otherwise (paper §2). The flaws activate on the local strain
@@ -15,15 +16,7 @@ use sph_core::glam::{DMat3, DVec3};
 use sph_damage::tensor::{DirectionalGrowth, grow, largest_damage, principal_strains};
 use sph_damage::{BoundAction, DamageBounds, DamageForm, DamageInput, apply_bounds};
 
-/// P_D = (1 − D) P in tension (P < 0), P in compression (paper §2).
-#[inline]
-pub(crate) fn damaged_pressure(pressure: f64, damage: f64) -> f64 {
-    if pressure < 0.0 {
-        (1.0 - damage) * pressure
-    } else {
-        pressure
-    }
-}
+pub(crate) use sph_damage::damaged_pressure;
 
 /// D of every particle from its integrated variable (empty when no material has damage;
 /// 0 for particles of materials without a damage model).
@@ -110,10 +103,9 @@ fn elastic_moduli<D: Dimension>(
     let rho = state.particles.density[i];
     let c = input.sound_speed[i];
     let g = input.shear_modulus[i];
-    let k = rho * c * c;
     (
-        sph_damage::youngs_modulus(k, g),
-        sph_damage::longitudinal_wave_speed(k, g, rho),
+        sph_damage::youngs_modulus(rho * c * c, g),
+        sph_damage::longitudinal_speed(c, g, rho),
     )
 }
 
@@ -429,14 +421,6 @@ pub(crate) fn advance_damage<D: Dimension>(
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn damaged_pressure_weakens_tension_only() {
-        assert_eq!(damaged_pressure(-10.0, 0.25), -7.5);
-        assert_eq!(damaged_pressure(-10.0, 1.0), 0.0);
-        assert_eq!(damaged_pressure(10.0, 0.7), 10.0);
-        assert_eq!(damaged_pressure(0.0, 0.7), 0.0);
-    }
 
     /// Two rock particles, one at ρ0 and one expanded to 0.4 ρ0, plus an undamageable
     /// particle at 0.1 ρ0, advanced with zero damage rates.

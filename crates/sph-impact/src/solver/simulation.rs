@@ -744,8 +744,11 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
             let r = &stage.rates[i];
             best = best.min(density_vote(self.scheme.cfl, p.density[i], r.drho, p.id[i]));
             // For a solid the signal is the longitudinal wave: c_L² = c² + 4G/(3ρ) (paper §2.5).
-            let c = stage.sound_speed[i];
-            let c_signal = (c * c + 4.0 * stage.shear_modulus[i] / (3.0 * p.density[i])).sqrt();
+            let c_signal = sph_damage::longitudinal_speed(
+                stage.sound_speed[i],
+                stage.shear_modulus[i],
+                p.density[i],
+            );
             best = best.min(cfl_vote(self.scheme.cfl, dx, c_signal, r.approach, p.id[i]));
             best = best.min(acceleration_vote(self.scheme.cfl, dx, r.dv.norm(), p.id[i]));
         }
@@ -1331,13 +1334,7 @@ fn longitudinal_speeds(sound_speed: &[f64], shear_modulus: &[f64], density: &[f6
         .iter()
         .zip(shear_modulus)
         .zip(density)
-        .map(|((&c, &g), &rho)| {
-            if g > 0.0 {
-                (c * c + 4.0 * g / (3.0 * rho)).sqrt()
-            } else {
-                c
-            }
-        })
+        .map(|((&c, &g), &rho)| sph_damage::longitudinal_speed(c, g, rho))
         .collect()
 }
 
