@@ -21,12 +21,12 @@
 //! the same at t = 0 in every geometry. Depth = surface − floor; an untouched target reads
 //! a few hundredths of a spacing (the half level of its own surface), not exactly 0.
 //!
-//! Why a disc and not the axis line (R = 0, sessions 25–27): on the line the kernel falls
+//! Why a disc and not the axis line (R = 0): on the line the kernel falls
 //! steeply with a particle's distance from the axis, so the nearest few particles decide
 //! φ. After an impact the first column of RZ rings sits evenly 0.5–1 mm off the axis,
 //! while in 3-D the same column scatters and a few particles stay close to it; at A_res
 //! 0.5 mm three of them carried 64 % of the 3-D line field below the crater
-//! (docs/verification.md, RZ against 3-D, session 27). Averaged over the disc, every
+//! (docs/verification.md, RZ against 3-D). Averaged over the disc, every
 //! particle weighs as a ring through it, the same in both geometries, and a pit is read
 //! when it is about as wide as the disc. The default R is H: a pit two spacings wide is
 //! read, a single column leaving or staying is not (tests

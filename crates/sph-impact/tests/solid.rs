@@ -959,9 +959,9 @@ fn rings_rebound_whole_with_artificial_stress_and_tear_without() {
 #[ignore = "long: ~3 min in release"]
 fn taylor_bar_final_length_within_five_percent() {
     // The default: the cubic lattice at 8 across with the study's artificial stress, on
-    // the contact anvil (measured, session 17, with the contact deciding on its ghosts'
-    // total force and R_f the widest point: L_f +3.8 %, R_f +4.5 %; session 16: +3.7 %,
-    // +0.05 %. The targets of 3 and 5 % are met by RZ at 16 across, `verify taylor
+    // the contact anvil (measured with the contact deciding on its ghosts' total force
+    // and R_f the widest point: L_f +3.8 %, R_f +4.5 %; deciding pair by pair gave
+    // +3.7 %, +0.05 %. The targets of 3 and 5 % are met by RZ at 16 across, `verify taylor
     // --geometry rz --resolution 16`, ~11 min).
     let out = sph_impact::verify::Problem::Taylor.run(None).unwrap();
     let l = out.get("final_length_error_relative").unwrap();
@@ -1091,7 +1091,7 @@ fn rz_free_rod_hoop_push(coupling: sph_damage::StressCoupling, damage: Option<f6
 /// uses the pair sums' gauge ŝ. Unbounded there, ŝ started at −2.73 on the outer column
 /// (the hoop force turned around); the rim jetted at 2 km/s from 13 µs and the run
 /// stopped with a NaN at 26 µs. Kept within its lattice range the rod comes to rest
-/// (measured on the contact anvil, session 16: KE 1.5e-3 of the start at 80 µs, L_f
+/// (measured on the contact anvil with pair-by-pair contact: KE 1.5e-3 of the start at 80 µs, L_f
 /// 23.56 mm, R_f 5.92 mm; 164 rings).
 #[test]
 fn rz_taylor_rod_four_across_comes_to_rest() {

@@ -977,9 +977,9 @@ fn a_missing_verify_form_names_the_problem() {
 /// A block pressed onto a contact wall while stretched along it acts on the wall as on a
 /// mirror: the wall's total force on each particle of the bottom row pushes, so all of
 /// its ghost pairs act, including the oblique ones that the lateral tension makes
-/// attractive along the pair's line. Deciding pair by pair (session 16) dropped those,
+/// attractive along the pair's line. Deciding pair by pair drops those,
 /// and with them their share of the wall's push: the bottom row, in equilibrium on the
-/// mirror (|v_y| < 1e-18 m/s after 1 ns), was driven into the wall at 1.4e-3 m/s.
+/// mirror (|v_y| < 1e-18 m/s after 1 ns), is then driven into the wall at 1.4e-3 m/s.
 #[test]
 fn a_contact_wall_in_compression_acts_as_a_mirror_under_lateral_tension() {
     let wall = Boundary::Wall {

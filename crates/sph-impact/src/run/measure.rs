@@ -139,9 +139,8 @@ impl Measurer {
     /// profiles are read against, bin by bin. A lattice's top layer sits half a spacing
     /// below the surface and the variable-resolution layers deeper where the particles
     /// are larger; against the reference an untouched bed reads depth 0 at every radius
-    /// (docs/diagnostics.md §4.1). (Until session 32 one offset, the median depth over
-    /// all bins, was subtracted; far from the axis that median read the tops of deeper
-    /// layers.) Keeps the t = 0 field on the axis as the axis depth's reference (§4.4).
+    /// (docs/diagnostics.md §4.1). (One offset for all bins, their median depth, would
+    /// read the tops of deeper layers far from the axis.) Keeps the t = 0 field on the axis as the axis depth's reference (§4.4).
     pub fn calibrate(&mut self, a: &Arrays) -> Result<(), sph_diagnostics::ImpactError> {
         self.axis = None;
         if self.active() {

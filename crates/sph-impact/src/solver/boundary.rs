@@ -8,9 +8,9 @@
 //! push: where the total force of a particle's contact ghosts would pull it toward the
 //! wall, they are all left out of its pair sums (no force, density or energy change), so
 //! material in tension against the wall behaves as at a free surface and can lift off;
-//! where it pushes they all act, as a mirror's. (Until session 17 the test was made pair
-//! by pair, which dropped the share of the push carried by pairs that a tension along
-//! the wall makes attractive.) With mirror walls the Taylor bar's anvil held the rod's
+//! where it pushes they all act, as a mirror's. (Deciding pair by pair instead drops the
+//! share of the push carried by pairs that a tension along the wall makes attractive.)
+//! With mirror walls the Taylor bar's anvil held the rod's
 //! foot at up to 0.86 GPa of mean axial tension 2–4 µs after impact and pulled the rod
 //! toward it between 1 and 2 µs (docs/verification.md, Taylor bar).
 

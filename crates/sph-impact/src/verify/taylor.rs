@@ -13,8 +13,8 @@
 //! Measured: L_f = the largest z, R_f = the largest distance from the axis (the widest
 //! point of the rod: its mushroomed foot), each as the particle centres plus half a
 //! spacing (the material edge); the radius of the foot's contact with the anvil (the
-//! same over the particles within one spacing of it: R_f until session 16, which drops
-//! a rim lifted by more than half a spacing); the largest plastic strain; and KE(t).
+//! same over the particles within one spacing of it, which drops a rim lifted by more
+//! than half a spacing); the largest plastic strain; and KE(t).
 
 use super::outcome::{Outcome, Panel, Picture, Profile};
 use super::setup::elastic_solid;
@@ -349,14 +349,14 @@ fn rod_length(shape: &[[f64; 2]], dx: f64) -> f64 {
 
 /// R_f: the outermost particle centre, + Δx/2. The rod's widest point is its foot; on
 /// the contact anvil the foot's rim may lift off by a fraction of a spacing (0.2 mm at
-/// 8 across in 3-D, session 16), and the mushroom's radius is what the FE reference
+/// 8 across in 3-D), and the mushroom's radius is what the FE reference
 /// and the recovered rods give.
 fn rod_face_radius(shape: &[[f64; 2]], dx: f64) -> f64 {
     outer_radius(shape.iter()) + 0.5 * dx
 }
 
 /// The foot's contact with the anvil: the outermost particle centre within one spacing
-/// of it, + Δx/2 (R_f until session 16). Less than R_f where the rim has lifted.
+/// of it, + Δx/2. Less than R_f where the rim has lifted.
 fn anvil_contact_radius(shape: &[[f64; 2]], dx: f64) -> f64 {
     outer_radius(shape.iter().filter(|x| x[1] < dx)) + 0.5 * dx
 }
