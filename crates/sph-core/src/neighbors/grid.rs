@@ -197,7 +197,7 @@ struct Gathered {
 /// bucketed by row with a stable counting sort over the chunks in order, so each bucket
 /// ascends and the result does not depend on the thread count.
 fn transpose_one_sided(gathered: Vec<Gathered>, n: usize) -> Vec<Chunk> {
-    let mut start = vec![0u32; n + 1];
+    let mut start = vec![0usize; n + 1];
     for g in &gathered {
         for &(j, _) in &g.one_sided {
             start[j as usize + 1] += 1;
@@ -210,11 +210,11 @@ fn transpose_one_sided(gathered: Vec<Gathered>, n: usize) -> Vec<Chunk> {
         start[k + 1] += start[k];
     }
     let mut fill = start.clone();
-    let mut extra = vec![0u32; start[n] as usize];
+    let mut extra = vec![0u32; start[n]];
     let mut chunks = Vec::with_capacity(gathered.len());
     for g in gathered {
         for &(j, i) in &g.one_sided {
-            extra[fill[j as usize] as usize] = i;
+            extra[fill[j as usize]] = i;
             fill[j as usize] += 1;
         }
         chunks.push(g.chunk);
@@ -232,7 +232,7 @@ fn transpose_one_sided(gathered: Vec<Gathered>, n: usize) -> Vec<Chunk> {
             let mut row = Vec::new();
             for k in 0..rows {
                 let i = first + k;
-                let more = &extra[start[i] as usize..start[i + 1] as usize];
+                let more = &extra[start[i]..start[i + 1]];
                 // Both ascend and are disjoint (a one-sided pair is not in the row that
                 // missed it): merge them.
                 row.clear();
