@@ -1,5 +1,5 @@
 # Which particles make the target's volume fraction phi on the impact axis at one height
-# (docs/verification.md, RZ, "Session 27": what fills the 3-D axis field). Sums
+# (docs/verification.md, "Axisymmetric (RZ) geometry": what fills the 3-D axis field). Sums
 # V_j W(|x_axis(z) - x_j|, H) over the wall particles with ZLO < z_j < ZHI within H of
 # the axis (3-D Wendland C2, as crater_axis_depth.py, at z = (ZLO + ZHI)/2) and lists the
 # largest shares with each particle's distance from the axis now and where it started.

@@ -41,7 +41,7 @@ def main(argv):
         if t == 0.0:
             continue
         ba, bb = float(ra["beta"]), float(rb["beta"])
-        # Histories written before session 25 have no axis depth: shown as nan.
+        # Histories of earlier versions have no axis depth: shown as nan.
         da, db = (float(r.get("crater_axis_depth_m", "nan")) for r in (ra, rb))
         dbeta = bb / ba - 1.0
         ddepth = db / da - 1.0 if da != 0.0 else float("nan")

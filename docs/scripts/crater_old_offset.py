@@ -1,4 +1,4 @@
-# The top-layer offset the crater reading used until session 32, from a run's t = 0
+# The top-layer offset an earlier crater reading subtracted, from a run's t = 0
 # snapshot: the median over the radial bins of the depth of each bin's highest target
 # centre, and what the untouched axis bin read against it (docs/validation.md,
 # "The crater reading"). RZ snapshots: Points are (r, 0, z).

@@ -1,4 +1,4 @@
-# Exploratory (docs/validation.md, session 10; to be replaced by making the diagnostics'
+# Exploratory (docs/validation.md; to be replaced by making the diagnostics'
 # DensityCut the default): crater depth with loose rubble left out of the profile. Same
 # rules as docs/diagnostics.md §4.1-4.2 otherwise: walls = target particles that are not
 # ejecta (above the surface and moving up), floor = highest wall particle per bin of r,

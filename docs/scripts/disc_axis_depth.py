@@ -1,7 +1,7 @@
 # Crater depth from the target's volume fraction averaged over a disc of radius R about
-# the impact axis: the code's axis depth since session 28 (docs/diagnostics.md §4.4,
+# the impact axis: the code's axis depth (docs/diagnostics.md §4.4,
 # sph_diagnostics::AxisDepth with DiscKernel), for snapshots of runs whose history.csv
-# holds the earlier reading on the axis line (sessions 25-27), and to check the code.
+# holds the earlier reading on the axis line (an earlier version), and to check the code.
 #
 # crater_axis_depth.py reads the field phi on the axis line alone, where the kernel falls
 # steeply with a particle's distance from the axis, so a few particles that stay close to

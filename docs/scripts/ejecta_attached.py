@@ -1,4 +1,4 @@
-# Exploratory (docs/validation.md, "β in time", session 29): which ejecta of a snapshot are
+# Exploratory (docs/validation.md, "β in time"): which ejecta of a snapshot are
 # still attached to the target, by the chain rule of docs/diagnostics.md §3.1 (two
 # particles interact when |x_i - x_j| < max(h_i, h_j); an ejectum is attached when a chain
 # of interacting target particles above the surface reaches one at or below it). Prints the

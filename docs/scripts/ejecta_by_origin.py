@@ -1,4 +1,4 @@
-# Exploratory (docs/validation.md, "Resolution", session 29): where the ejecta of a snapshot
+# Exploratory (docs/validation.md, "Resolution"): where the ejecta of a snapshot
 # started. Ejecta follow the rule of docs/diagnostics.md §2 (target material above the
 # original surface z = 0, moving up); each is traced back by its id to the first snapshot
 # and binned by its starting distance from the axis r0. Per bin: mass, axial momentum, the

@@ -1,6 +1,6 @@
 # Position, velocity, density, pressure, smoothing length and deviatoric stress of chosen
 # particles (by id) through the snapshots of one RZ run (docs/verification.md, RZ,
-# "Session 27", the axis jet). RZ snapshots store (r, 0, z); the columns are r, z, v_r,
+# "Axisymmetric (RZ) geometry", the axis jet). RZ snapshots store (r, 0, z); the columns are r, z, v_r,
 # v_z (m/s), rho (kg/m^3), P (GPa; the undamaged EOS pressure), h (mm) and S_rr, S_zz,
 # S_rz (GPa).
 #

@@ -1,4 +1,4 @@
-# Exploratory (docs/validation.md, "Why the spall zone shrinks with resolution", session 19):
+# Exploratory (docs/validation.md, "Why the spall zone shrinks with resolution"):
 # does the rock around the crater yield before its flaws can activate?
 #
 #   python3 spall_yield.py RUN_DIR N3D [R_LO R_HI Z_LO]

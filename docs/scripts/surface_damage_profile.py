@@ -1,4 +1,4 @@
-# Exploratory (docs/validation.md, session 11): the target's surface layer by distance from
+# Exploratory (docs/validation.md): the target's surface layer by distance from
 # the axis, to compare the spall zones of two grids.
 #
 #   python3 surface_damage_profile.py profile SNAPSHOT.vtu [TARGET_ID RHO0 BIN_M]

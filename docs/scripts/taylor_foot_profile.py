@@ -1,4 +1,4 @@
-# Exploratory (docs/verification.md, Taylor bar, session 29): the shape of the Taylor rod's
+# Exploratory (docs/verification.md, Taylor bar): the shape of the Taylor rod's
 # foot from `verify taylor --out DIR`'s profile.csv (final particle or ring centres r, z).
 # Per 0.5 mm of r: the highest centre (the top of the foot) and the lowest (how far the
 # underside sits above the anvil), in mm.
