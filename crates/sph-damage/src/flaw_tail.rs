@@ -7,11 +7,12 @@
 //! ε_top = (J / (kV))^(1/m),   J = the number of seeded flaws
 //! ```
 //!
-//! (verification.md §7). The Weibull population n(ε) = k ε^m itself has no end: a real
-//! body strained past ε_top holds flaws that keep activating. A particle of the seeded
-//! body has, on average, 1/N of the body's flaws below any strain, k (V/N) ε^m (N the
-//! particles the flaws were dealt over: in RZ the 3-D particles the rings stand for), so with
-//! [`FlawTail::Continuum`] its active count continues past its seeded flaws as
+//! (docs/verification.md, "Damage: tensile bar with Benz–Asphaug flaws"). The Weibull population
+//! n(ε) = k ε^m itself has no end: a real body strained past ε_top holds flaws that keep
+//! activating. A particle of the seeded body has, on average, 1/N of the body's flaws below any
+//! strain, k (V/N) ε^m (N the particles the flaws were dealt over: in RZ the 3-D particles the
+//! rings stand for), so with [`FlawTail::Continuum`] its active count continues past its seeded
+//! flaws as
 //!
 //! ```text
 //! n_act(ε) = n_tot + k (V/N) (ε^m − ε_top^m),   ε > ε_top,

@@ -1,5 +1,5 @@
-//! Benz–Asphaug flaw seeding (verification.md §7): thresholds, statistics,
-//! reproducibility, serialisation.
+//! Benz–Asphaug flaw seeding (docs/verification.md, "Damage: tensile bar with Benz–Asphaug
+//! flaws"): thresholds, statistics, reproducibility, serialisation.
 
 use sph_damage::{DamageError, FlawSet, WeibullParams, min_activation_strain};
 

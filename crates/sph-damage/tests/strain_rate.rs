@@ -1,6 +1,6 @@
-//! Peak stress under constant strain rate (verification.md §7): the continuum
-//! Grady–Kipp scaling σ_max ∝ ε̇^(3/(m+3)) and what the explicit-flaw Benz–Asphaug model
-//! gives.
+//! Peak stress under constant strain rate (docs/verification.md, "Damage: tensile bar with
+//! Benz–Asphaug flaws"): the continuum Grady–Kipp scaling σ_max ∝ ε̇^(3/(m+3)) and what the
+//! explicit-flaw Benz–Asphaug model gives.
 //!
 //! The loading is a homogeneous bar of N particles under uniaxial stress: every
 //! particle sees the same applied strain ε = ε̇ t, carries σ_i = E ε̇ t (1 − D_i), and the
@@ -69,7 +69,8 @@ fn grady_kipp_peak(w: WeibullParams, e: f64, cg: f64, rate: f64) -> (f64, f64) {
 
 #[test]
 fn grady_kipp_reference_reproduces_the_verification_table_and_exponent() {
-    // verification.md §7, BA99 basalt (k = 4e35, m = 9), c_g = 0.4 c_L.
+    // docs/verification.md, "Damage: tensile bar with Benz–Asphaug flaws", BA99 basalt (k = 4e35,
+    // m = 9), c_g = 0.4 c_L.
     let (e, cl) = basalt();
     let w = WeibullParams::BASALT_BA99;
     let table = [

@@ -4,8 +4,8 @@
 //!   function as the "Tait" EOS of weakly compressible SPH (Monaghan 1994, n = 7).
 //!   ∂P/∂ρ|_e = (K0/ρ0) (ρ/ρ0)^(n−1), ∂P/∂e|_ρ = 0.
 //! - Linear elastic: P = K0 (ρ/ρ0 − 1) = K0 μ, the n = 1 case and the n → small-strain
-//!   limit of any n (the EOS of verification.md §10's elastic-plastic impact):
-//!   ∂P/∂ρ|_e = K0/ρ0, so c = c0 = √(K0/ρ0) everywhere.
+//!   limit of any n (the EOS of docs/verification.md, "Solid dynamics: elastic–plastic
+//!   planar impact"): ∂P/∂ρ|_e = K0/ρ0, so c = c0 = √(K0/ρ0) everywhere.
 //!
 //! With ∂P/∂e = 0 the sound speed is c² = ∂P/∂ρ > 0 for every ρ > 0; the floor
 //! (a fraction of c0 = √(K0/ρ0)) acts only where (ρ/ρ0)^(n−1) drops below fraction², i.e.

@@ -927,8 +927,8 @@ fn contact_sphere_into_block_runs_clean() {
 #[test]
 #[ignore = "long: ~4 min in release"]
 fn rings_rebound_whole_with_artificial_stress_and_tear_without() {
-    // verification.md §5: with artificial stress the rings stay two bodies
-    // (friends-of-friends at 1.5 Δp) and rebound; without it they tear.
+    // docs/verification.md, "Colliding rubber rings": with artificial stress the rings stay two
+    // bodies (friends-of-friends at 1.5 Δp) and rebound; without it they tear.
     let out = sph_impact::verify::Problem::Rings.run(None).unwrap();
     let get = |k: &str| out.get(k).unwrap();
     let (with, with_end) = (
@@ -974,7 +974,8 @@ fn taylor_bar_final_length_within_five_percent() {
 #[test]
 #[ignore = "long: ~6 min in release on two threads, ~16 on one"]
 fn plate_period_within_five_percent_at_ten_across() {
-    // verification.md §4: T = 0.2540 s within 5 % at V_f = 0.01 with ≥ 10 across.
+    // docs/verification.md, "Oscillating plate": T = 0.2540 s within 5 % at V_f = 0.01 with ≥ 10
+    // across.
     let out = sph_impact::verify::Problem::Plate.run(Some(10)).unwrap();
     let e = out.get("period_error_relative").unwrap();
     let amp = out.get("tip_amplitude_vf001").unwrap();

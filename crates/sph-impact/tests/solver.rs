@@ -321,7 +321,8 @@ fn toro_3_shock_within_two_percent() {
 fn planar_noh_meets_its_targets() {
     let o = Problem::NohPlanar.run(Some(100)).unwrap();
     println!("{:?}", o.metrics);
-    // verification.md §2: ρ L1 over [0.05, 0.35] ≤ 0.048 at nx = 100, shock at 0.2 ± 1 spacing.
+    // docs/verification.md, "Noh": ρ L1 over [0.05, 0.35] ≤ 0.048 at nx = 100, shock at
+    // 0.2 ± 1 spacing.
     assert!(
         o.get("l1_rho").unwrap() <= 0.048,
         "{}",
@@ -333,8 +334,8 @@ fn planar_noh_meets_its_targets() {
 
 #[test]
 fn sedov_2d_meets_its_targets() {
-    // verification.md §3: shock radius within 2 % of ξ0 (E t²/ρ0)^(1/4) at ≥ 3 of the 4
-    // times, log R–log t slope within 2 % of 1/2, energy conserved (80 across: ~10 s in
+    // docs/verification.md, "Sedov–Taylor": shock radius within 2 % of ξ0 (E t²/ρ0)^(1/4) at ≥ 3
+    // of the 4 times, log R–log t slope within 2 % of 1/2, energy conserved (80 across: ~10 s in
     // release; docs/verification.md has 200 across).
     let o = Problem::Sedov2d.run(Some(80)).unwrap();
     let errors: Vec<f64> = (1..=4)
@@ -366,8 +367,8 @@ fn only_sedov_takes_a_deposit() {
 #[test]
 #[ignore = "three resolutions; about 30 s in release: cargo test -p sph-impact --release --test solver -- --ignored"]
 fn sod_converges() {
-    // verification.md §1 at 400, 800 and 1600: order ≥ 0.8 and every resolution's star
-    // state within 2 % and shock within one spacing.
+    // docs/verification.md, "1-D Riemann problems", at 400, 800 and 1600: order ≥ 0.8 and every
+    // resolution's star state within 2 % and shock within one spacing.
     let runs: Vec<_> = [400, 800, 1600]
         .iter()
         .map(|&n| Problem::Sod.run(Some(n)).unwrap())
@@ -523,7 +524,8 @@ fn bad_boundary_is_a_typed_error_naming_it() {
 fn elastic_bars_carry_the_right_wave_and_separate() {
     let o = Problem::ElasticBar.run(Some(100)).unwrap();
     println!("{:?}", o.metrics);
-    // verification.md §10: front at c_L within 1 %, plateau ρ c_L v within 2 %.
+    // docs/verification.md, "Solid dynamics: elastic bars": front at c_L within 1 %, plateau
+    // ρ c_L v within 2 %.
     assert!(o.get("front_speed_error_relative").unwrap().abs() < 0.01);
     assert!(o.get("plateau_stress_error_max").unwrap() < 0.02);
     // The unbonded interface lets the bars part (welded, they keep 0.15 % of KE0), and the
@@ -537,9 +539,9 @@ fn elastic_bars_carry_the_right_wave_and_separate() {
 fn elastic_precursor_has_the_hel_amplitude_at_both_speeds() {
     let o = Problem::HelImpact.run(None).unwrap();
     println!("{:?}", o.metrics);
-    // verification.md §10: precursor amplitude within 3 % of σ_HEL = 0.5075 GPa at V = 400
-    // and 1000 m/s. (Its speed converges at first order: +2.3 % at this resolution, see
-    // the ignored test below at twice the resolution.)
+    // docs/verification.md, "Solid dynamics: elastic–plastic planar impact": precursor amplitude
+    // within 3 % of σ_HEL = 0.5075 GPa at V = 400 and 1000 m/s. (Its speed converges at first
+    // order: +2.3 % at this resolution, see the ignored test below at twice the resolution.)
     for v in ["v400", "v1000"] {
         assert!(
             o.get(&format!("{v}_precursor_error_relative"))

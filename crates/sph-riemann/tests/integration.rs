@@ -1,5 +1,5 @@
 //! sph-riemann: hand-computed pair terms, HLLC star states against exact Riemann
-//! solutions (verification.md §1), invariances of v*.
+//! solutions (docs/verification.md, "1-D Riemann problems"), invariances of v*.
 
 use approx::assert_relative_eq;
 use proptest::prelude::*;

@@ -145,8 +145,8 @@ pub const COPPER_SG_TAYLOR_FIT: SteinbergGuinanParams = SteinbergGuinanParams {
     ..COPPER_SG
 };
 
-/// Copper of the Taylor-bar code benchmark (verification.md §6a; Wilkins & Guinan 1973
-/// geometry): von Mises σ_y = 400 MPa with linear hardening H = 100 MPa,
+/// Copper of the Taylor-bar code benchmark (docs/verification.md, "Taylor bar"; Wilkins & Guinan
+/// 1973 geometry): von Mises σ_y = 400 MPa with linear hardening H = 100 MPa,
 /// G = E/(2(1 + ν)) = 117 GPa / 2.7 = 43.33 GPa.
 pub const TAYLOR_BAR_COPPER: VonMisesParams = VonMisesParams {
     yield_strength: 400.0e6,

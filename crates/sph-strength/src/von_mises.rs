@@ -1,6 +1,6 @@
 //! Constant (von Mises) strength, paper §3.2: `Y_i = Y0`, optionally with linear
 //! isotropic hardening `Y_i = Y0 + H ε_p` (the bilinear copper of the Taylor-bar
-//! benchmark, verification.md §6a: Y0 = 400 MPa, H = 100 MPa). Damage weakening is
+//! benchmark, docs/verification.md, "Taylor bar": Y0 = 400 MPa, H = 100 MPa). Damage weakening is
 //! multiplicative, eq. (12): `Y = Y_i (1 − D)`.
 //!
 //! H here is the *plastic* hardening modulus dY/dε_p. FE codes that quote a "tangent

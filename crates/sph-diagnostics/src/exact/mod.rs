@@ -1,4 +1,5 @@
-//! Exact solutions for the verification problems (verification.md §1–3).
+//! Exact solutions for the verification problems (docs/verification.md, "1-D Riemann problems",
+//! "Noh" and "Sedov–Taylor").
 
 pub mod noh;
 pub mod riemann;

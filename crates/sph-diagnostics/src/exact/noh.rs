@@ -1,4 +1,4 @@
-//! The Noh implosion (Noh 1987; verification.md §2): cold gas of density ρ0 streaming
+//! The Noh implosion (Noh 1987; docs/verification.md, "Noh"): cold gas of density ρ0 streaming
 //! at speed |v0| toward the origin (planar, cylindrical or spherical, d = 1, 2, 3) forms
 //! a shock at r_s = (γ − 1)/2·|v0|·t. Inside: v = 0, e = v0²/2,
 //! ρ2 = ρ0((γ+1)/(γ−1))^d, P2 = (γ−1)ρ2 e. Outside: v = −|v0|, e = 0,

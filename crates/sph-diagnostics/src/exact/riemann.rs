@@ -1,5 +1,6 @@
 //! The exact solution of the ideal-gas Riemann problem (Toro, *Riemann Solvers and
-//! Numerical Methods for Fluid Dynamics*, 3rd ed., ch. 4; verification.md §1).
+//! Numerical Methods for Fluid Dynamics*, 3rd ed., ch. 4; docs/verification.md, "1-D Riemann
+//! problems").
 
 use crate::error::ExactError;
 

@@ -13,7 +13,7 @@ use crate::exact::noh::RadialState;
 /// The Sedov problem: geometry ν, γ, blast energy E and ambient density ρ0.
 ///
 /// In planar geometry E is the energy per unit area of both half-spaces together; in
-/// cylindrical geometry per unit length (A_ν = 2, 2π, 4π; verification.md §3).
+/// cylindrical geometry per unit length (A_ν = 2, 2π, 4π; docs/verification.md, "Sedov–Taylor").
 #[derive(Clone, Debug, PartialEq)]
 pub struct Sedov {
     nu: u32,
@@ -135,7 +135,7 @@ impl Sedov {
         Ok(s)
     }
 
-    /// α of E = α ρ0 R^(ν+2)/t² (verification.md §3):
+    /// α of E = α ρ0 R^(ν+2)/t² (docs/verification.md, "Sedov–Taylor"):
     /// α = 8 A_ν/((γ²−1)(ν+2)²) ∫₀¹ (g f² + h) λ^(ν−1) dλ, integrated in V with
     /// composite Gauss–Legendre on a grid refined toward the centre.
     fn energy_integral(&self) -> f64 {

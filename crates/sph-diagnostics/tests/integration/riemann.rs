@@ -1,4 +1,5 @@
-//! The exact Riemann solver against the [exact] table of verification.md §1.
+//! The exact Riemann solver against the [exact] table of docs/verification.md, "1-D Riemann
+//! problems".
 
 use approx::assert_relative_eq;
 use sph_diagnostics::exact::{GasState, RiemannSolution};
@@ -11,7 +12,8 @@ fn st(a: [f64; 3]) -> GasState {
     }
 }
 
-/// (name, left, right, γ, p*, u*, ρ*_L, ρ*_R) from verification.md §1 (5–6 digits).
+/// (name, left, right, γ, p*, u*, ρ*_L, ρ*_R) from docs/verification.md, "1-D Riemann problems"
+/// (5–6 digits).
 type Row = (&'static str, [f64; 3], [f64; 3], f64, f64, f64, f64, f64);
 const TABLE: [Row; 8] = [
     (

@@ -1,11 +1,11 @@
-//! Sedov and Noh exact solutions against verification.md §2–3.
+//! Sedov and Noh exact solutions against docs/verification.md, "Noh" and "Sedov–Taylor".
 
 use approx::assert_relative_eq;
 use sph_diagnostics::exact::{Noh, Sedov};
 
 #[test]
 fn sedov_xi0_matches_the_table() {
-    // (γ, ν, α, ξ0) — verification.md §3 [exact].
+    // (γ, ν, α, ξ0) — docs/verification.md, "Sedov–Taylor" [exact].
     let table = [
         (1.4, 1, 1.07749, 0.97543),
         (1.4, 2, 0.98407, 1.00402),

@@ -1,5 +1,6 @@
-//! The principal Hugoniot solver: verification.md §8 table (Tillotson, ρ0 = 2700 for Al and
-//! basalt), the exact linear U_s–u_p of Mie–Grüneisen and the ideal-gas strong-shock limit.
+//! The principal Hugoniot solver: docs/verification.md, "Multi-material contact, planar" table
+//! (Tillotson, ρ0 = 2700 for Al and basalt), the exact linear U_s–u_p of Mie–Grüneisen and the
+//! ideal-gas strong-shock limit.
 
 use crate::common::rel;
 use sph_eos::{
@@ -7,7 +8,8 @@ use sph_eos::{
     TillotsonParams, hugoniot,
 };
 
-/// (material, V km/s, U_s km/s, P GPa, ρ/ρ0) of verification.md §8; u_p = V/2.
+/// (material, V km/s, U_s km/s, P GPa, ρ/ρ0) of docs/verification.md, "Multi-material contact,
+/// planar"; u_p = V/2.
 const TABLE: [(&str, f64, f64, f64, f64); 9] = [
     ("Al", 2.0, 6.7535, 18.234, 1.1738),
     ("Al", 5.0, 8.8706, 59.877, 1.3924),
@@ -96,7 +98,8 @@ fn mie_gruneisen_hugoniot_is_the_linear_us_up_fit() {
             h.shock_speed
         );
     }
-    // Experimental Al 6061 check of verification.md §8: 6.69 km/s at u_p = 1 km/s.
+    // Experimental Al 6061 check of docs/verification.md, "Multi-material contact, planar":
+    // 6.69 km/s at u_p = 1 km/s.
     let h = hugoniot(&mg, p.rho0, 1000.0).unwrap();
     assert!((h.shock_speed - 6690.0).abs() < 1.0);
 }

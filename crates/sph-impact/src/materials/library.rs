@@ -97,7 +97,7 @@ impl MaterialSpec {
     ///   order-of-magnitude only, see sph-eos).
     ///
     /// Derived: K = 26.7 GPa, E = 53.06 GPa, ν = 0.169, c_L = 4450.6 m/s at 2876 kg/m³
-    /// (4593.3 m/s at the 2700 kg/m³ of verification.md §10).
+    /// (4593.3 m/s at the 2700 kg/m³ of docs/verification.md, "Solid dynamics: elastic bars").
     pub fn basalt_study() -> Self {
         MaterialSpec::new(
             "basalt-study",
@@ -200,7 +200,8 @@ impl MaterialSpec {
     ///   Y0 = 90 MPa, μ_i = 2, Y_M = 1.5 GPa, μ_d = 0.8; G = 27 GPa (miluphcuda's
     ///   granite; neither source gives G).
     /// - Damage: Benz–Asphaug with Spheral's granite Weibull set, k = 1e33 m⁻³, m = 6.2
-    ///   (verification.md §7), crack speed 0.4 c_L.
+    ///   (docs/verification.md, "Damage: tensile bar with Benz–Asphaug flaws"), crack speed
+    ///   0.4 c_L.
     /// - Thermal: none. Granite melts over several hundred kelvin and no sourced latent
     ///   heats were found; give `[thermal]` data in a material file if melting matters.
     pub fn granite() -> Self {
@@ -301,7 +302,7 @@ impl MaterialSpec {
     ///   strengths are MPa-scale, Petrovic 2003). Chosen to keep the EOS, strength and
     ///   damage from one consistent source; the specification gives no ice strength.
     /// - Damage: Benz–Asphaug, k = 1.4e38 m⁻³, m = 9.6 (Benz & Asphaug 1999;
-    ///   verification.md §7).
+    ///   docs/verification.md, "Damage: tensile bar with Benz–Asphaug flaws").
     /// - Thermal: none. The one-c_v caloric model cannot hold ice (c_p ≈ 2.1 kJ/kg/K) and
     ///   liquid water (4.2 kJ/kg/K) at once, and an icy body's reference temperature is
     ///   scene-specific; give `[thermal]` data in a material file.

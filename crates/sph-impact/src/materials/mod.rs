@@ -29,7 +29,8 @@
 //! assert!(!basalt.is_fluid());
 //! // E = 9KG/(3K + G) with K = A = 26.7 GPa, G = 22.7 GPa (paper §3.3).
 //! assert!((basalt.youngs_modulus().unwrap() / 53.06e9 - 1.0).abs() < 1e-3);
-//! // c_L = √((K + 4G/3)/ρ): 4593.3 m/s at verification.md §10's 2700 kg/m³.
+//! // c_L = √((K + 4G/3)/ρ): 4593.3 m/s at the 2700 kg/m³ of docs/verification.md, "Solid
+//! // dynamics: elastic bars".
 //! assert!((basalt.longitudinal_wave_speed_at(2700.0).unwrap() - 4593.3).abs() < 0.1);
 //!
 //! // Benz–Asphaug flaws are seeded per body: same volumes and seed, same flaws.

@@ -52,9 +52,10 @@ pub const ICE_BA99_VON_MISES: VonMisesParams = VonMisesParams {
 };
 
 /// Weibull k of granite in Spheral's material library, 1e27 cm⁻³ = 1e33 m⁻³
-/// (verification.md §7).
+/// (docs/verification.md, "Damage: tensile bar with Benz–Asphaug flaws").
 pub const GRANITE_WEIBULL_K: f64 = 1.0e33;
-/// Weibull m of granite in Spheral's material library (verification.md §7).
+/// Weibull m of granite in Spheral's material library (docs/verification.md, "Damage: tensile bar
+/// with Benz–Asphaug flaws").
 pub const GRANITE_WEIBULL_M: f64 = 6.2;
 
 /// Iron, handbook thermal data (pure Fe, CRC Handbook of Chemistry and Physics):

@@ -1,4 +1,4 @@
-//! Multi-material contact, planar (verification.md §8, "Shock Hugoniot / planar impact"):
+//! Multi-material contact, planar (docs/verification.md, "Multi-material contact, planar"):
 //! an aluminium plate (Tillotson, the study's set, ρ0 = 2785) at 3.9 km/s into a basalt
 //! plate at rest (Tillotson, the study's set, ρ0 = 2876), 1-D, hydrodynamic (the strength
 //! adds ~2Y/3 ≈ 0.2 GPa to tens of GPa). The two materials meet at an unbonded interface

@@ -1,7 +1,7 @@
-//! Elastic bars in uniaxial strain (verification.md §10): two identical aluminium bars
-//! (E = 70 GPa, ν = 0.3, ρ = 2700 kg/m³: K = 58.33 GPa, G = 26.92 GPa, linear elastic EOS,
-//! von Mises with a yield strength far above the stresses reached) of length L = 0.1 m
-//! collide at ±10 m/s. The symmetric pair replaces a rigid wall, which could pull on the
+//! Elastic bars in uniaxial strain (docs/verification.md, "Solid dynamics: elastic bars"): two
+//! identical aluminium bars (E = 70 GPa, ν = 0.3, ρ = 2700 kg/m³: K = 58.33 GPa, G = 26.92 GPa,
+//! linear elastic EOS, von Mises with a yield strength far above the stresses reached) of length
+//! L = 0.1 m collide at ±10 m/s. The symmetric pair replaces a rigid wall, which could pull on the
 //! bar in tension through its ghosts.
 //!
 //! Exact (linear elasticity): the compressive front runs at c_L = √((K + 4G/3)/ρ) =

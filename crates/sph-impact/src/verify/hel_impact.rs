@@ -1,9 +1,10 @@
-//! Elastic–plastic planar impact (verification.md §10): aluminium (E = 70 GPa, ν = 0.3,
-//! ρ = 2700, linear elastic EOS P = Kμ, von Mises Y = 0.29 GPa) plates colliding
-//! symmetrically at V = 400 m/s (±200 m/s) and V = 1000 m/s. Exact two-wave structure:
-//! an elastic precursor at c_L = 5907.6 m/s with amplitude σ_HEL = Y(1−ν)/(1−2ν) =
-//! (K + 4G/3)Y/(2G) = 0.5075 GPa, the same at every V, followed by the plastic wave at
-//! c_B = √(K/ρ) = 4648 m/s (σ_xx = 2.618 GPa behind it at 400 m/s, 6.383 GPa at 1000 m/s).
+//! Elastic–plastic planar impact (docs/verification.md, "Solid dynamics: elastic–plastic planar
+//! impact"): aluminium (E = 70 GPa, ν = 0.3, ρ = 2700, linear elastic EOS P = Kμ, von Mises
+//! Y = 0.29 GPa) plates colliding symmetrically at V = 400 m/s (±200 m/s) and V = 1000 m/s.
+//! Exact two-wave structure: an elastic precursor at c_L = 5907.6 m/s with amplitude
+//! σ_HEL = Y(1−ν)/(1−2ν) = (K + 4G/3)Y/(2G) = 0.5075 GPa, the same at every V, followed by the
+//! plastic wave at c_B = √(K/ρ) = 4648 m/s (σ_xx = 2.618 GPa behind it at 400 m/s, 6.383 GPa at
+//! 1000 m/s).
 //!
 //! Measured at t = 0.8 L/c_L (before the precursor reaches the free end): the precursor
 //! amplitude as the median σ_xx between the two measured fronts (a quarter of the gap

@@ -52,23 +52,24 @@ enum Form {
 /// A verification problem.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Problem {
-    /// Sod's shock tube, γ = 1.4, t = 0.2 (verification.md §1).
+    /// Sod's shock tube, γ = 1.4, t = 0.2 (docs/verification.md, "1-D Riemann problems").
     Sod,
     /// Toro's test 2 ("123"), near vacuum, t = 0.15.
     Toro123,
     /// Toro's test 3, pressure ratio 1e5, t = 0.012.
     Toro3,
-    /// Planar Noh, γ = 5/3, t = 0.6 (verification.md §2).
+    /// Planar Noh, γ = 5/3, t = 0.6 (docs/verification.md, "Noh").
     NohPlanar,
     /// Cylindrical Noh in 2-D.
     NohCylindrical,
     /// Spherical Noh in 3-D.
     NohSpherical,
-    /// Cylindrical Sedov–Taylor blast in 2-D, γ = 5/3 (verification.md §3).
+    /// Cylindrical Sedov–Taylor blast in 2-D, γ = 5/3 (docs/verification.md, "Sedov–Taylor").
     Sedov2d,
     /// Spherical Sedov–Taylor blast in 3-D, γ = 5/3.
     Sedov3d,
-    /// Two elastic aluminium bars colliding at ±10 m/s (verification.md §10).
+    /// Two elastic aluminium bars colliding at ±10 m/s (docs/verification.md, "Solid dynamics:
+    /// elastic bars").
     ElasticBar,
     /// Elastic–plastic planar impact of aluminium plates at 400 and 1000 m/s (§10).
     HelImpact,
@@ -76,13 +77,14 @@ pub enum Problem {
     Spin,
     /// Aluminium into basalt at 3.9 km/s, planar, against the Tillotson impedance match.
     Contact,
-    /// The elastic oscillating plate (2-D cantilever, verification.md §4).
+    /// The elastic oscillating plate (2-D cantilever; docs/verification.md, "Oscillating plate").
     Plate,
-    /// Colliding rubber rings (2-D, verification.md §5).
+    /// Colliding rubber rings (2-D; docs/verification.md, "Colliding rubber rings").
     Rings,
     /// Taylor bar: copper rod on a rigid anvil at 227 m/s (3-D quarter, §6a).
     Taylor,
-    /// A basalt bar with Benz–Asphaug flaws pulled at 1e2…1e6 s⁻¹ (verification.md §7).
+    /// A basalt bar with Benz–Asphaug flaws pulled at 1e2…1e6 s⁻¹ (docs/verification.md, "Damage:
+    /// tensile bar with Benz–Asphaug flaws").
     TensileBar,
 }
 

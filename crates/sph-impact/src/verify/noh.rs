@@ -1,4 +1,4 @@
-//! Noh implosions (verification.md §2): γ = 5/3, ρ0 = 1, inflow speed 1, P0 = 1e-6,
+//! Noh implosions (docs/verification.md, "Noh"): γ = 5/3, ρ0 = 1, inflow speed 1, P0 = 1e-6,
 //! t = 0.6; exact shock at r = 0.2.
 //!
 //! * planar: 1-D, particles on [0, 1], reflecting wall at x = 0, free far end;

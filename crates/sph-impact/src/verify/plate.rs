@@ -1,5 +1,5 @@
-//! Elastic oscillating plate (verification.md §4; Gray, Monaghan & Swift 2001): a
-//! cantilever in 2-D plane strain, L = 0.2 m beyond the clamp, H = 0.02 m thick,
+//! Elastic oscillating plate (docs/verification.md, "Oscillating plate"; Gray, Monaghan & Swift
+//! 2001): a cantilever in 2-D plane strain, L = 0.2 m beyond the clamp, H = 0.02 m thick,
 //! ρ = 1000 kg/m³, E = 2 MPa, ν = 0.3975 (K = 3.25203 MPa, G = 0.715564 MPa; linear
 //! elastic EOS, no yield). The clamp is the plate's own continuation over 0.06 m behind
 //! x = 0 with its particles held at rest (SPHinXsys's constrained section).

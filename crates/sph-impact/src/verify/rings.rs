@@ -1,7 +1,7 @@
-//! Colliding rubber rings (verification.md §5; Monaghan 2000; Gray, Monaghan & Swift
-//! 2001), Spheral's set in SI: rings r_in = 3 cm, r_out = 4 cm centred at x = ∓5 cm,
-//! ρ0 = 1010 kg/m³, c0 = 852 m/s, K = ρ0c0² = 733 MPa, G = 0.22 K (linear elastic EOS, no
-//! yield), moving at ±0.059 c0 = 50.3 m/s toward each other; first contact at 198.9 µs.
+//! Colliding rubber rings (docs/verification.md, "Colliding rubber rings"; Monaghan 2000; Gray,
+//! Monaghan & Swift 2001), Spheral's set in SI: rings r_in = 3 cm, r_out = 4 cm centred at
+//! x = ∓5 cm, ρ0 = 1010 kg/m³, c0 = 852 m/s, K = ρ0c0² = 733 MPa, G = 0.22 K (linear elastic EOS,
+//! no yield), moving at ±0.059 c0 = 50.3 m/s toward each other; first contact at 198.9 µs.
 //! 2-D plane strain, `n` particles across the ring wall on concentric circles. The rings
 //! are two bodies (two materials with the same properties), so their contact is an
 //! unbonded interface.

@@ -1,5 +1,5 @@
-//! Sedov–Taylor blasts (verification.md §3): γ = 5/3, ρ0 = 1, background P0 = 1e-6,
-//! E = 1 (per unit length in 2-D) deposited in the centre particles (see [`Deposit`]);
+//! Sedov–Taylor blasts (docs/verification.md, "Sedov–Taylor"): γ = 5/3, ρ0 = 1, background
+//! P0 = 1e-6, E = 1 (per unit length in 2-D) deposited in the centre particles (see [`Deposit`]);
 //! cubic lattice filling [−1, 1]^d with a free surface. The run stops when the exact
 //! shock reaches r ≈ 0.8 (t = 0.48 in 2-D, 0.40 in 3-D); the shock radius is measured at
 //! 1/4, 1/2, 3/4 and 1 of the end time.

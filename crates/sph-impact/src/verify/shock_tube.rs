@@ -1,4 +1,4 @@
-//! 1-D Riemann problems (verification.md §1): Sod, Toro 123, Toro 3.
+//! 1-D Riemann problems (docs/verification.md, "1-D Riemann problems"): Sod, Toro 123, Toro 3.
 //!
 //! Set-up: domain [0, 1], interface at 0.5, ideal gas γ = 1.4, equal-mass particles
 //! (spacing ratio ρ_L/ρ_R), reflecting walls at both ends for Sod and Toro 3, free ends

@@ -1,4 +1,4 @@
-//! Taylor bar (verification.md §6a; Wilkins & Guinan 1973 geometry): a copper rod,
+//! Taylor bar (docs/verification.md, "Taylor bar"; Wilkins & Guinan 1973 geometry): a copper rod,
 //! L0 = 32.4 mm, R0 = 3.2 mm, hits a rigid frictionless anvil at 227 m/s. ρ = 8930 kg/m³,
 //! E = 117 GPa, ν = 0.35 (K = 130 GPa, G = 43.33 GPa; linear elastic EOS), von Mises
 //! Y = 400 MPa with linear hardening H = 100 MPa; t_end = 80 µs. Reference (FE spread):

@@ -1,6 +1,6 @@
-//! Tensile bar with Benz–Asphaug damage (verification.md §7): the peak stress of a bar
-//! pulled at constant strain rate, against the static strength E ε_1 and the Grady–Kipp
-//! rate scaling σ_max ∝ ε̇^(3/(m+3)).
+//! Tensile bar with Benz–Asphaug damage (docs/verification.md, "Damage: tensile bar with
+//! Benz–Asphaug flaws"): the peak stress of a bar pulled at constant strain rate, against the
+//! static strength E ε_1 and the Grady–Kipp rate scaling σ_max ∝ ε̇^(3/(m+3)).
 //!
 //! Set-up: a basalt bar (linear elastic, K = 26.7 GPa, G = 22.7 GPa, ρ = 2700 kg/m³,
 //! elastic strength; BA99 Weibull flaws k = 4e35 m⁻³, m = 9) of length 50 mm and
