@@ -108,11 +108,16 @@ fn search_cost<D: sph_core::Dimension>(sim: &Simulation<D, KernelChoice>) -> (f6
     (pairs / p.len() as f64, grid.candidates() as f64 / pairs)
 }
 
-fn run_case(case: &Case) {
+/// The case's bundled scene, read from examples/scenes.
+fn scene_of(case: &Case) -> Scene {
     let path = Path::new(env!("CARGO_MANIFEST_DIR"))
         .join("../examples/scenes")
         .join(case.file);
-    let scene = Scene::from_toml_file(&path).expect("scene");
+    Scene::from_toml_file(&path).expect("scene")
+}
+
+fn run_case(case: &Case) {
+    let scene = scene_of(case);
     // The bundled scenes place at A_res = 0.5 mm (the study's) at scale 1.
     println!(
         "\n{} basalt impact, 3.9 km/s, A_res {} mm ({}, --resolution-scale {}): {} RK2 steps \
@@ -186,11 +191,9 @@ fn run_case(case: &Case) {
 /// Builds the case's scene and times ten neighbour searches on its initial particles
 /// (for profiling the search alone).
 fn search_only(case: &Case) {
-    let path = Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("../examples/scenes")
-        .join(case.file);
-    let scene = Scene::from_toml_file(&path).expect("scene");
-    let built = scene.build_scaled(case.resolution_scale).expect("build");
+    let built = scene_of(case)
+        .build_scaled(case.resolution_scale)
+        .expect("build");
     let SceneSimulation::ThreeD(sim) = built.simulation else {
         println!("--search times the 3-D scene only");
         return;

@@ -783,7 +783,7 @@ impl sph_damage::BodyDamage for UserThreshold {
 fn a_user_damage_model_plugs_in_per_body() {
     let recipe = std::sync::Arc::new(UserThreshold::default());
     let mut m = MaterialSpec::basalt_study();
-    m.damage = DamageSpec::Custom(recipe.clone());
+    m.damage = DamageSpec::Custom(sph_impact::materials::CustomDamage(recipe.clone()));
     m.validate().unwrap();
     assert!(!m.damage.is_builtin());
     assert_eq!(m.damage.name(), "user-threshold");

@@ -15,7 +15,7 @@ use std::sync::Arc;
 /// The built-in variants can be written to and read from TOML; [`DamageSpec::Custom`]
 /// holds a user's model (a [`BodyDamage`] recipe from their own crate) and exists in
 /// code only, like a custom equation of state or strength model.
-#[derive(Clone, Debug, Default)]
+#[derive(Clone, Debug, Default, PartialEq)]
 pub enum DamageSpec {
     /// No damage.
     #[default]
@@ -54,69 +54,32 @@ pub enum DamageSpec {
         shear: Option<PlasticFailure>,
     },
     /// A user's damage model, built per body by its recipe.
-    Custom(Arc<dyn BodyDamage>),
+    Custom(CustomDamage),
 }
 
-impl PartialEq for DamageSpec {
-    /// Built-in variants compare by value; custom recipes by identity (the same `Arc`).
+/// A user's damage recipe in a [`DamageSpec`]: compared by identity (two specs are equal
+/// when they hold the same `Arc`), so the built-in variants keep their derived,
+/// value-wise equality.
+#[derive(Clone, Debug)]
+pub struct CustomDamage(pub Arc<dyn BodyDamage>);
+
+impl PartialEq for CustomDamage {
     fn eq(&self, other: &Self) -> bool {
-        match (self, other) {
-            (Self::None, Self::None) => true,
-            (
-                Self::MaxTensileStress {
-                    sigma_b: a,
-                    failure: b,
-                    crack_speed_fraction: c,
-                    shear: d,
-                },
-                Self::MaxTensileStress {
-                    sigma_b: a2,
-                    failure: b2,
-                    crack_speed_fraction: c2,
-                    shear: d2,
-                },
-            ) => a == a2 && b == b2 && c == c2 && d == d2,
-            (
-                Self::BenzAsphaug {
-                    k,
-                    m,
-                    crack_speed_fraction,
-                    growth,
-                    tail,
-                    strain,
-                    form,
-                    shear,
-                },
-                Self::BenzAsphaug {
-                    k: k2,
-                    m: m2,
-                    crack_speed_fraction: c2,
-                    growth: g2,
-                    tail: t2,
-                    strain: s2,
-                    form: f2,
-                    shear: sh2,
-                },
-            ) => {
-                k == k2
-                    && m == m2
-                    && crack_speed_fraction == c2
-                    && growth == g2
-                    && tail == t2
-                    && strain == s2
-                    && form == f2
-                    && shear == sh2
-            }
-            (Self::Custom(a), Self::Custom(b)) => Arc::ptr_eq(a, b),
-            _ => false,
-        }
+        Arc::ptr_eq(&self.0, &other.0)
+    }
+}
+
+impl std::ops::Deref for CustomDamage {
+    type Target = dyn BodyDamage;
+    fn deref(&self) -> &Self::Target {
+        &*self.0
     }
 }
 
 impl DamageSpec {
     /// A user's damage model (see [`BodyDamage`]).
     pub fn custom(recipe: impl BodyDamage + 'static) -> Self {
-        Self::Custom(Arc::new(recipe))
+        Self::Custom(CustomDamage(Arc::new(recipe)))
     }
 
     /// False for [`DamageSpec::Custom`], which material files cannot describe.

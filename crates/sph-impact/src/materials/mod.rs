@@ -63,7 +63,7 @@ mod toml_read;
 mod toml_schema;
 mod toml_write;
 
-pub use damage_spec::DamageSpec;
+pub use damage_spec::{CustomDamage, DamageSpec};
 pub use describe::table;
 pub use eos_choice::EosChoice;
 pub use error::{Location, MaterialError};
