@@ -15,7 +15,7 @@ pub fn poisson_ratio(bulk_modulus: f64, shear_modulus: f64) -> f64 {
 }
 
 /// Longitudinal (P-wave) speed c_L = √((K + 4G/3)/ρ), m/s (paper §2.5). Basalt at
-/// ρ = 2700 kg/m³: 4593.3 m/s (docs/verification.md, "Solid dynamics: elastic bars").
+/// ρ = 2700 kg/m³: 4593.3 m/s (docs/reference/weibull_flaws.md, "Parameter sets").
 #[inline]
 pub fn longitudinal_wave_speed(bulk_modulus: f64, shear_modulus: f64, density: f64) -> f64 {
     ((bulk_modulus + 4.0 / 3.0 * shear_modulus) / density).sqrt()

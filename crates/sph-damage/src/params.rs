@@ -39,8 +39,8 @@ impl WeibullParams {
     /// Basalt, Schäfer et al. 2016 (A&A 590:A19): k = 5e34 m⁻³, m = 8.
     pub const BASALT_SCHAEFER16: WeibullParams = WeibullParams { k: 5.0e34, m: 8.0 };
     /// Basalt, measured by Nakamura et al. 2007 (m = 15–17, k = 1e57–1e65 m⁻³); the
-    /// central values k = 1e61 m⁻³, m = 16 used in docs/verification.md, "Damage: tensile bar with
-    /// Benz–Asphaug flaws".
+    /// central values k = 1e61 m⁻³, m = 16 of
+    /// docs/reference/weibull_flaws.md, "Parameter sets".
     pub const BASALT_NAKAMURA07: WeibullParams = WeibullParams { k: 1.0e61, m: 16.0 };
     /// Ice, Benz & Asphaug 1999 (Icarus 142:5, Table II): k = 1.4e38 m⁻³, m = 9.6.
     pub const ICE_BA99: WeibullParams = WeibullParams { k: 1.4e38, m: 9.6 };

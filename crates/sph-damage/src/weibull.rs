@@ -11,8 +11,8 @@
 //! (the strain at which n(ε) V = j), and each flaw goes to a particle drawn uniformly at
 //! random, until every particle holds at least one flaw. The total number of flaws is
 //! then the coupon-collector number, N·H_N ≈ N (ln N + 0.5772) on average, i.e. about
-//! ln N + 0.58 flaws per particle (docs/verification.md, "Damage: tensile bar with Benz–Asphaug
-//! flaws"). The weakest flaw of the body is exactly ε_1 = (kV)^(−1/m), so the body's static
+//! ln N + 0.58 flaws per particle (docs/reference/weibull_flaws.md,
+//! "Flaw statistics"). The weakest flaw of the body is exactly ε_1 = (kV)^(−1/m), so the body's static
 //! strength is σ_b = E (kV)^(−1/m).
 //!
 //! Seeding is sequential (one random stream, flaws in order j = 1, 2, …), so the flaw
@@ -31,8 +31,8 @@ use rand_pcg::Pcg64Mcg;
 use serde::{Deserialize, Serialize};
 
 /// ε_min = (kV)^(−1/m): the activation strain of the weakest flaw in a volume V (the
-/// strain at which k V ε^m = 1). Benz & Asphaug 1995; docs/verification.md, "Damage: tensile bar
-/// with Benz–Asphaug flaws".
+/// strain at which k V ε^m = 1). Benz & Asphaug 1995; docs/reference/weibull_flaws.md,
+/// "Flaw statistics".
 #[inline]
 pub fn min_activation_strain(k: f64, m: f64, volume: f64) -> f64 {
     (k * volume).powf(-1.0 / m)

@@ -69,7 +69,7 @@ fn grady_kipp_peak(w: WeibullParams, e: f64, cg: f64, rate: f64) -> (f64, f64) {
 
 #[test]
 fn grady_kipp_reference_reproduces_the_verification_table_and_exponent() {
-    // docs/verification.md, "Damage: tensile bar with Benz–Asphaug flaws", BA99 basalt (k = 4e35,
+    // docs/reference/weibull_flaws.md, "Grady–Kipp dynamic strength", BA99 basalt (k = 4e35,
     // m = 9), c_g = 0.4 c_L.
     let (e, cl) = basalt();
     let w = WeibullParams::BASALT_BA99;

@@ -1,5 +1,5 @@
 //! Static strength σ_b = E (kV)^(−1/m) and elastic helpers: the study's numbers (paper
-//! §3.3) and docs/verification.md, "Damage: tensile bar with Benz–Asphaug flaws".
+//! §3.3) and docs/reference/weibull_flaws.md, "Parameter sets".
 
 use sph_damage::{
     DamageError, WeibullParams, longitudinal_wave_speed, min_activation_strain, poisson_ratio,
@@ -22,10 +22,10 @@ fn basalt_elastic_constants() {
     let e = basalt_e();
     assert!((e - 9.0 * 26.7e9 * 22.7e9 / (3.0 * 26.7e9 + 22.7e9)).abs() <= 1e-6);
     assert!(rounds_to(e / 1e9, 53.06, 2), "{e}");
-    // ν = (3K − 2G)/(2(3K + G)) = 34.7/205.6 = 0.16877 (docs/verification.md, "Damage: tensile bar
-    // with Benz–Asphaug flaws": 0.1688).
+    // ν = (3K − 2G)/(2(3K + G)) = 34.7/205.6 = 0.16877 (docs/reference/weibull_flaws.md,
+    // "Parameter sets": 0.1688).
     assert!(rounds_to(poisson_ratio(26.7e9, 22.7e9), 0.1688, 4));
-    // c_L at 2700 kg/m³ = 4593.3 m/s (docs/verification.md, "Solid dynamics: elastic bars").
+    // c_L at 2700 kg/m³ = 4593.3 m/s (docs/reference/weibull_flaws.md, "Parameter sets").
     assert!(rounds_to(
         longitudinal_wave_speed(26.7e9, 22.7e9, 2700.0),
         4593.3,
@@ -59,7 +59,7 @@ fn study_static_strength_of_disc_and_target() {
 
 #[test]
 fn verification_table_static_strength_for_basalt() {
-    // docs/verification.md, "Damage: tensile bar with Benz–Asphaug flaws", E = 53.06 GPa; MPa at
+    // docs/reference/weibull_flaws.md, "Parameter sets", E = 53.06 GPa; MPa at
     // the table's precision.
     let e = basalt_e();
     let volumes = [

@@ -1,6 +1,6 @@
 //! Principal shock Hugoniot of an EOS from the ambient state (ρ0, e0 = 0, P0 = 0) at a
 //! given particle velocity: the reference for planar-impact tests and impedance matching
-//! (docs/verification.md, "Multi-material contact, planar").
+//! (docs/reference/tillotson.md, "Shock Hugoniot and planar impact").
 //!
 //! Rankine–Hugoniot jump conditions with e0 = P0 = 0 (e.g. Meyers 1994, *Dynamic Behavior
 //! of Materials*, shock-wave chapter):

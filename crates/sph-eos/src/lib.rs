@@ -5,8 +5,8 @@
 //! internal energy e (J/kg), in SI units, compression positive.
 //!
 //! - [`IdealGas`]: P = (γ − 1)ρe.
-//! - [`Tillotson`]: Tillotson (1962), all four regions as in verification.md §8, Bμ² kept,
-//!   analytic derivatives, no hidden cutoffs; named parameter sets
+//! - [`Tillotson`]: Tillotson (1962), all four regions as in docs/reference/tillotson.md, Bμ²
+//!   kept, analytic derivatives, no hidden cutoffs; named parameter sets
 //!   ([`TillotsonParams::basalt_study`], [`TillotsonParams::aluminium_study`], ...).
 //! - [`MieGruneisen`]: Mie–Grüneisen on a linear U_s–u_p Hugoniot.
 //! - [`Murnaghan`] and [`LinearElastic`].
@@ -22,7 +22,8 @@
 //! use sph_eos::{EquationOfState, Tillotson, TillotsonParams, TillotsonRegion, hugoniot};
 //!
 //! let basalt = Tillotson::new(TillotsonParams::basalt_ba99())?;
-//! // verification.md §8: ρ = 1.1 ρ0, e = 0 gives P = Aμ + Bμ² = 2.937 GPa.
+//! // docs/reference/tillotson.md, "Check points": ρ = 1.1 ρ0, e = 0 gives
+//! // P = Aμ + Bμ² = 2.937 GPa.
 //! let p = basalt.evaluate(1.1 * 2700.0, 0.0);
 //! assert!((p.pressure - 2.937e9).abs() < 1e-6 * 2.937e9);
 //! assert!(!p.sound_speed_floored);

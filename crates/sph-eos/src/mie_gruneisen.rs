@@ -50,7 +50,7 @@ pub struct MieGruneisenParams {
 
 impl MieGruneisenParams {
     /// Aluminium 6061-T6, an example set: ρ0 = 2703 kg/m³ and the experimental Hugoniot
-    /// U_s ≈ 5.35 + 1.34 u_p km/s quoted in docs/verification.md, "Multi-material contact, planar"
+    /// U_s ≈ 5.35 + 1.34 u_p km/s quoted in docs/reference/tillotson.md, "Shock Hugoniot and planar impact"
     /// (LASL shock data, Marsh 1980), with Γ0 = 2.0 (Al's usual value; Steinberg 1996,
     /// UCRL-MA-106439, lists 1.97 with a slightly different fit, c0 = 5.24 km/s, s = 1.4). Not a
     /// study parameter.

@@ -3,7 +3,7 @@
 //! Reference: J. H. Tillotson, "Metallic equations of state for hypervelocity impact",
 //! General Atomic report GA-3216 (1962); the region logic as in Melosh (1989), *Impact
 //! Cratering*, Appendix II, and Benz & Asphaug (1999), Icarus 142:5. Formulas exactly as
-//! in the project's verification.md §8 ("Formula"), with no cutoffs:
+//! in docs/reference/tillotson.md, "Formula", with no cutoffs:
 //!
 //! η = ρ/ρ0, μ = η − 1, ω0 = e/(E0 η²) + 1, z = ρ0/ρ − 1.
 //!
@@ -33,8 +33,8 @@
 //! `sound_speed_floor_fraction · c0`, c0 = √(A/ρ0), and flagged
 //! ([`crate::EosPoint::sound_speed_floored`]). No pressure cutoff is applied unless
 //! [`Tillotson::with_min_pressure`] is called. Not implemented (documented alternatives in
-//! verification.md §8): miluphcuda's P = 0 for η < ρ_limit and its ideal-gas switch above
-//! 100 E_cv.
+//! docs/reference/tillotson.md, "Formula"): miluphcuda's P = 0 for η < ρ_limit and its
+//! ideal-gas switch above 100 E_cv.
 
 use crate::eos::{
     DEFAULT_SOUND_SPEED_FLOOR_FRACTION, EosPoint, EquationOfState, basic_state_check,

@@ -1,11 +1,11 @@
 //! Named Tillotson parameter sets, each with its source.
 //!
-//! The literature sets are those of the project's verification.md §8 (taken from
+//! The literature sets are those of docs/reference/tillotson.md, "Parameters (SI)" (taken from
 //! miluphcuda's `material_data/*.till.cfg`, which cite Benz & Asphaug 1999, Melosh 1989 and
 //! Tillotson 1962, and cross-checked with Spheral's MaterialPropertiesLib in CGS). The
 //! "study" sets are Table A1 of the reference study with its Table 1 densities (paper §3.1).
-//! Variants in circulation (verification.md §8) are *not* these: e.g. Spheral's "aluminum"
-//! has E_iv = 2.7, E_cv = 14.1 MJ/kg, its "basalt" ρ0 = 2900 kg/m³.
+//! Variants in circulation (docs/reference/tillotson.md, "Parameters (SI)") are *not* these:
+//! e.g. Spheral's "aluminum" has E_iv = 2.7, E_cv = 14.1 MJ/kg, its "basalt" ρ0 = 2900 kg/m³.
 
 use crate::tillotson::TillotsonParams;
 
@@ -34,7 +34,7 @@ impl TillotsonParams {
     /// Basalt, Benz & Asphaug (1999), "Catastrophic disruptions revisited", Icarus 142:5
     /// (their Tillotson table; also miluphcuda `basalt.till.cfg`): ρ0 = 2700 kg/m³,
     /// A = B = 26.7 GPa, E0 = 487 MJ/kg, E_iv = 4.72 MJ/kg, E_cv = 18.2 MJ/kg, a = 0.5,
-    /// b = 1.5, α = β = 5. The set of verification.md §8's check points.
+    /// b = 1.5, α = β = 5. The set of the check points of docs/reference/tillotson.md.
     pub fn basalt_ba99() -> Self {
         Self {
             rho0: 2700.0,
@@ -53,7 +53,8 @@ impl TillotsonParams {
     /// Aluminium, Tillotson (1962) as tabulated by Melosh (1989), *Impact Cratering*,
     /// Table AII.3 (miluphcuda / Spheral "aluminum melosh89"): ρ0 = 2700 kg/m³,
     /// A = 75.2 GPa, B = 65.0 GPa, E0 = 5.0 MJ/kg, E_iv = 3.0 MJ/kg, E_cv = 13.9 MJ/kg,
-    /// a = 0.5, b = 1.63, α = β = 5. The set of verification.md §8's check points.
+    /// a = 0.5, b = 1.63, α = β = 5. The set of the check points of
+    /// docs/reference/tillotson.md.
     pub fn aluminium_melosh89() -> Self {
         Self {
             rho0: 2700.0,
@@ -69,7 +70,7 @@ impl TillotsonParams {
         }
     }
 
-    /// Granite, Allen (1967), as tabulated in verification.md §8: ρ0 = 2680 kg/m³,
+    /// Granite, Allen (1967), as tabulated in docs/reference/tillotson.md: ρ0 = 2680 kg/m³,
     /// A = B = 18 GPa, E0 = 16 MJ/kg, E_iv = 3.5 MJ/kg, E_cv = 18 MJ/kg, a = 0.5, b = 1.3,
     /// α = β = 5.
     pub fn granite() -> Self {
@@ -148,8 +149,8 @@ mod tests {
         }
     }
 
-    /// verification.md §8: c0 = √(A/ρ0) = 3144.7 (basalt), 5277.5 (Al), 2591.6 (granite),
-    /// 4051.0 (iron), 3213.6 m/s (ice), to the printed 0.1 m/s.
+    /// docs/reference/tillotson.md, "Check points": c0 = √(A/ρ0) = 3144.7 (basalt), 5277.5
+    /// (Al), 2591.6 (granite), 4051.0 (iron), 3213.6 m/s (ice), to the printed 0.1 m/s.
     #[test]
     fn reference_sound_speeds() {
         for (p, c0) in [

@@ -599,15 +599,15 @@ fn elastic_constants_of_basalt() {
     let e = b.youngs_modulus().unwrap();
     assert!((e - 9.0 * k * g / (3.0 * k + g)).abs() < 1e-6 * e);
     assert!((e / 1e9 - 53.0624).abs() < 1e-4, "E = {e}");
-    // ν = (3K − 2G)/(2(3K + G)) = 0.1688 (docs/verification.md, "Damage: tensile bar with
-    // Benz–Asphaug flaws").
+    // ν = (3K − 2G)/(2(3K + G)) = 0.1688 (docs/reference/weibull_flaws.md, "Parameter
+    // sets").
     assert!((b.poisson_ratio().unwrap() - 0.1688).abs() < 5e-5);
-    // c_L = √((K + 4G/3)/ρ): 4593.3 m/s at 2700 kg/m³ (docs/verification.md, "Solid dynamics:
-    // elastic bars"), 4450.57 m/s at the study's 2876 kg/m³.
+    // c_L = √((K + 4G/3)/ρ): 4593.3 m/s at 2700 kg/m³ (docs/reference/weibull_flaws.md,
+    // "Parameter sets"), 4450.57 m/s at the study's 2876 kg/m³.
     assert!((b.longitudinal_wave_speed_at(2700.0).unwrap() - 4593.3).abs() < 0.05);
     let cl = b.longitudinal_wave_speed().unwrap();
     assert!((cl - 4450.57).abs() < 0.01, "c_L = {cl}");
-    // c_s = √(G/ρ): 2899.6 m/s at 2700 (docs/verification.md, "Solid dynamics: elastic bars");
+    // c_s = √(G/ρ): 2899.6 m/s at 2700 (docs/reference/weibull_flaws.md, "Parameter sets");
     // 2809.4 at 2876.
     assert!((b.shear_wave_speed() - (g / 2876.0_f64).sqrt()).abs() < 1e-9);
     // A fluid's c_L is its bulk sound speed.

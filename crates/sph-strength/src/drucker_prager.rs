@@ -2,9 +2,9 @@
 //!
 //!   `Y_i = Y0 + μ P`, capped at the limit strength `Y_M`,
 //!
-//! the μP-linear limit of the Lundborg curve (verification.md §11). Damage weakening is
-//! frictional, eq. (13): `Y = Y_d D + Y_i (1 − D)`, `Y_d = min(μ_d P, Y_i)`
-//! ([`crate::weakening`]).
+//! the μP-linear limit of the Lundborg curve (docs/reference/strength_point_values.md,
+//! "Lundborg granite and radial return"). Damage weakening is frictional, eq. (13):
+//! `Y = Y_d D + Y_i (1 − D)`, `Y_d = min(μ_d P, Y_i)` ([`crate::weakening`]).
 //!
 //! In tension the line is followed down to zero strength at P = −Y0/μ and Y_i = 0
 //! below that (a cohesive material cannot have negative shear strength; miluphcuda's

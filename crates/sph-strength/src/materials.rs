@@ -25,7 +25,8 @@ pub const BASALT_LUNDBORG: LundborgParams = LundborgParams {
     tension: LundborgTension::LinearToZero,
 };
 
-/// Granite of Collins, Melosh & Ivanov 2004 (MAPS 39:217) as in verification.md §11:
+/// Granite of Collins, Melosh & Ivanov 2004 (MAPS 39:217) as in
+/// docs/reference/strength_point_values.md, "Lundborg granite and radial return":
 /// Y0 = 90 MPa, μ_i = 2, Y_M = 1.5 GPa, μ_d = 0.8. Neither source gives G here:
 /// G = 27 GPa is the granite shear modulus of miluphcuda's Collins-model test material.
 pub const GRANITE_LUNDBORG_COLLINS2004: LundborgParams = LundborgParams {
@@ -85,9 +86,10 @@ pub const ALUMINIUM_2024_SG: SteinbergGuinanParams = SteinbergGuinanParams {
     melt_law: None,
 };
 
-/// OFHC copper, Johnson–Cook (Johnson & Cook 1983; verification.md §6d): A = 90 MPa,
-/// B = 292 MPa, n = 0.31, C = 0.025, m = 1.09, T_m = 1356 K, T_r = 298 K, ε̇0 = 1 /s.
-/// G = 47.7 GPa is copper's ambient shear modulus G0 from Steinberg 1996 (§6c).
+/// OFHC copper, Johnson–Cook (Johnson & Cook 1983; docs/reference/strength_point_values.md,
+/// "Johnson–Cook copper and aluminium"): A = 90 MPa, B = 292 MPa, n = 0.31, C = 0.025,
+/// m = 1.09, T_m = 1356 K, T_r = 298 K, ε̇0 = 1 /s. G = 47.7 GPa is copper's ambient shear
+/// modulus G0 from Steinberg 1996 (same page, "Steinberg–Guinan copper").
 pub const OFHC_COPPER_JC: JohnsonCookParams = JohnsonCookParams {
     a: 90.0e6,
     b: 292.0e6,
@@ -100,9 +102,10 @@ pub const OFHC_COPPER_JC: JohnsonCookParams = JohnsonCookParams {
     shear_modulus: 47.7e9,
 };
 
-/// Al 6061-T6, Johnson–Cook (the set of the LS-DYNA material libraries; verification.md
-/// §6d): A = 324 MPa, B = 114 MPa, n = 0.42, C = 0.002, m = 1.34, T_m = 925 K (some
-/// sources use 855 K), T_r = 298 K, ε̇0 = 1 /s. G = 26 GPa (handbook value for 6061-T6,
+/// Al 6061-T6, Johnson–Cook (the set of the LS-DYNA material libraries;
+/// docs/reference/strength_point_values.md, "Johnson–Cook copper and aluminium"):
+/// A = 324 MPa, B = 114 MPa, n = 0.42, C = 0.002, m = 1.34, T_m = 925 K (some sources use
+/// 855 K), T_r = 298 K, ε̇0 = 1 /s. G = 26 GPa (handbook value for 6061-T6,
 /// E = 68.9 GPa, ν = 0.33).
 pub const AL_6061_T6_JC: JohnsonCookParams = JohnsonCookParams {
     a: 324.0e6,
@@ -117,10 +120,10 @@ pub const AL_6061_T6_JC: JohnsonCookParams = JohnsonCookParams {
 };
 
 /// Copper, Steinberg–Guinan "starting" set of the Spheral Taylor-impact test
-/// (verification.md §6c; Steinberg 1996): G0 = 0.477 Mbar, A = 2.83 /Mbar,
-/// B = 3.77e-4 /K, Y0 = 1.2 kbar, Y_max = 6.4 kbar, β = 36, n = 0.45, ε_i = 0.
-/// ρ0 = 8930 kg/m³ and T_m0 = 1790 K from Steinberg 1996 (no melt law by default; that
-/// table gives γ0 = 2.02, a = 1.5 for [`crate::SgMeltLaw`]).
+/// (docs/reference/strength_point_values.md, "Steinberg–Guinan copper"; Steinberg 1996):
+/// G0 = 0.477 Mbar, A = 2.83 /Mbar, B = 3.77e-4 /K, Y0 = 1.2 kbar, Y_max = 6.4 kbar, β = 36,
+/// n = 0.45, ε_i = 0. ρ0 = 8930 kg/m³ and T_m0 = 1790 K from Steinberg 1996 (no melt law by
+/// default; that table gives γ0 = 2.02, a = 1.5 for [`crate::SgMeltLaw`]).
 pub const COPPER_SG: SteinbergGuinanParams = SteinbergGuinanParams {
     shear_modulus: 47.7e9,
     // 1 Mbar = 1e11 Pa.
@@ -137,7 +140,8 @@ pub const COPPER_SG: SteinbergGuinanParams = SteinbergGuinanParams {
 };
 
 /// Copper, Steinberg–Guinan "fitted" set of the Spheral Taylor-impact test
-/// (verification.md §6c): as [`COPPER_SG`] but Y0 = 3.2 kbar, β = 5, n = 0.30.
+/// (docs/reference/strength_point_values.md, "Steinberg–Guinan copper"): as [`COPPER_SG`]
+/// but Y0 = 3.2 kbar, β = 5, n = 0.30.
 pub const COPPER_SG_TAYLOR_FIT: SteinbergGuinanParams = SteinbergGuinanParams {
     yield_strength: 0.32e9,
     hardening_coefficient: 5.0,

@@ -2,8 +2,9 @@
 //! elastic-plastic flow", Methods Comput. Phys. 3:211; paper §3.2).
 //!
 //! After the elastic trial update, if the equivalent stress σ_eq = √(3 J2) of the
-//! deviatoric trial stress exceeds Y, S is scaled by exactly Y/σ_eq (verification.md
-//! §11), which puts it on the yield surface without changing its direction. With
+//! deviatoric trial stress exceeds Y, S is scaled by exactly Y/σ_eq
+//! (docs/reference/strength_point_values.md, "Lundborg granite and radial return"), which
+//! puts it on the yield surface without changing its direction. With
 //! `J2 = ½ S:S` (S deviatoric), √(3 J2) = √(3/2 S:S).
 //!
 //! The equivalent plastic strain of the return is (Wilkins 1964; for a perfectly plastic

@@ -1,4 +1,5 @@
-//! Point values of verification.md §6c, §6d and §11.
+//! Point values of docs/reference/strength_point_values.md: "Steinberg–Guinan copper",
+//! "Johnson–Cook copper and aluminium" and "Lundborg granite and radial return".
 
 use sph_strength::{
     DruckerPrager, DruckerPragerParams, JohnsonCook, Lundborg, SteinbergGuinan, StrengthModel,
@@ -13,8 +14,9 @@ fn at_pressure(p: f64) -> StrengthState {
     StrengthState::new(p, 2630.0, 300.0)
 }
 
-/// verification.md §11: Collins et al. 2004 granite, Y0 = 90 MPa, μ_i = 2,
-/// Y_M = 1.5 GPa, μ_d = 0.8. Y_i and Y_d = min(μ_d P, Y_i) to 1e-4 relative.
+/// docs/reference/strength_point_values.md, "Lundborg granite and radial return": Collins et
+/// al. 2004 granite, Y0 = 90 MPa, μ_i = 2, Y_M = 1.5 GPa, μ_d = 0.8. Y_i and
+/// Y_d = min(μ_d P, Y_i) to 1e-4 relative.
 #[test]
 fn lundborg_granite_table() {
     let m = Lundborg::new(materials::GRANITE_LUNDBORG_COLLINS2004).unwrap();
@@ -80,7 +82,8 @@ fn jc_state(eps: f64, rate: f64, t: f64) -> StrengthState {
     s
 }
 
-/// verification.md §6d, T_r = 298 K, ε̇0 = 1 /s, to 1e-4 relative.
+/// docs/reference/strength_point_values.md, "Johnson–Cook copper and aluminium", T_r = 298 K,
+/// ε̇0 = 1 /s, to 1e-4 relative.
 #[test]
 fn johnson_cook_point_checks() {
     let cu = JohnsonCook::new(materials::OFHC_COPPER_JC).unwrap();
@@ -114,7 +117,7 @@ fn johnson_cook_6061_melt_temperature_matters() {
     assert!(rel(y, 157.918_493e6) < 1e-6, "Y = {}", y / 1e6);
 }
 
-/// verification.md §6c, copper Steinberg–Guinan: G and Y.
+/// docs/reference/strength_point_values.md, "Steinberg–Guinan copper": G and Y.
 ///
 /// The table prints four significant figures. Two entries are the correctly rounded
 /// values of the formula but lie just outside 1e-4 relative of it purely by that

@@ -1,4 +1,4 @@
-//! The principal Hugoniot solver: docs/verification.md, "Multi-material contact, planar" table
+//! The principal Hugoniot solver: docs/reference/tillotson.md, "Shock Hugoniot and planar impact" table
 //! (Tillotson, ρ0 = 2700 for Al and basalt), the exact linear U_s–u_p of Mie–Grüneisen and the
 //! ideal-gas strong-shock limit.
 
@@ -8,8 +8,8 @@ use sph_eos::{
     TillotsonParams, hugoniot,
 };
 
-/// (material, V km/s, U_s km/s, P GPa, ρ/ρ0) of docs/verification.md, "Multi-material contact,
-/// planar"; u_p = V/2.
+/// (material, V km/s, U_s km/s, P GPa, ρ/ρ0) of docs/reference/tillotson.md,
+/// "Shock Hugoniot and planar impact"; u_p = V/2.
 const TABLE: [(&str, f64, f64, f64, f64); 9] = [
     ("Al", 2.0, 6.7535, 18.234, 1.1738),
     ("Al", 5.0, 8.8706, 59.877, 1.3924),
@@ -98,7 +98,7 @@ fn mie_gruneisen_hugoniot_is_the_linear_us_up_fit() {
             h.shock_speed
         );
     }
-    // Experimental Al 6061 check of docs/verification.md, "Multi-material contact, planar":
+    // Experimental Al 6061 check of docs/reference/tillotson.md, "Shock Hugoniot and planar impact":
     // 6.69 km/s at u_p = 1 km/s.
     let h = hugoniot(&mg, p.rho0, 1000.0).unwrap();
     assert!((h.shock_speed - 6690.0).abs() < 1.0);

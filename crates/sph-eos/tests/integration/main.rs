@@ -1,5 +1,5 @@
-//! sph-eos integration tests: verification.md §8 point values and Hugoniot, derivative and
-//! thermodynamic-consistency checks, temperature model.
+//! sph-eos integration tests: the point values and Hugoniot of docs/reference/tillotson.md,
+//! derivative and thermodynamic-consistency checks, temperature model.
 
 // Reference values are pasted with all the digits the 40-digit reference printed.
 #![allow(clippy::excessive_precision)]

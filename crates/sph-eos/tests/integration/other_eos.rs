@@ -21,7 +21,7 @@ fn water_tait() -> Murnaghan {
     .unwrap()
 }
 fn al_linear() -> LinearElastic {
-    // docs/verification.md, "Solid dynamics: elastic bars", aluminium: E = 70 GPa, ν = 0.3
+    // docs/reference/weibull_flaws.md, "Parameter sets", aluminium: E = 70 GPa, ν = 0.3
     // → K = E/(3(1 − 2ν)).
     LinearElastic::new(LinearElasticParams {
         rho0: 2700.0,
@@ -98,7 +98,7 @@ fn murnaghan_and_linear_point_values() {
         assert_eq!(p.dp_de, 0.0);
     }
     assert_eq!(w.pressure(1000.0, 0.0), 0.0);
-    // docs/verification.md, "Solid dynamics: elastic bars": c_bulk = √(K/ρ) = 4648.1 m/s for
+    // docs/reference/weibull_flaws.md, "Parameter sets": c_bulk = √(K/ρ) = 4648.1 m/s for
     // Al (K = 58.33 GPa, ρ = 2700).
     let l = al_linear();
     let p = l.evaluate(2700.0 * 1.01, 5e6);

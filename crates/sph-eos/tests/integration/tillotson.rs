@@ -1,5 +1,5 @@
-//! Tillotson: verification.md §8 check points, derivatives in every region, continuity
-//! across E_iv and E_cv, and the sign of c² over (0.1–3 ρ0) × (0–100 E_cv).
+//! Tillotson: the check points of docs/reference/tillotson.md, derivatives in every region,
+//! continuity across E_iv and E_cv, and the sign of c² over (0.1–3 ρ0) × (0–100 E_cv).
 
 use crate::common::{close, fd, isentropic_c2, rel};
 use proptest::prelude::*;
@@ -12,7 +12,8 @@ fn aluminium() -> Tillotson {
     Tillotson::new(TillotsonParams::aluminium_melosh89()).unwrap()
 }
 
-/// One row of verification.md §8: (η, e selector, printed P, 40-digit P, region).
+/// One row of docs/reference/tillotson.md, "Check points": (η, e selector, printed P, 40-digit
+/// P, region).
 /// The 40-digit values come from tests/reference/tillotson_reference.py (mpmath).
 struct Row {
     eta: f64,
@@ -213,7 +214,7 @@ fn check_points_of_verification_section_8() {
             }
         }
     }
-    println!("Tillotson §8 check points: worst relative error vs 40-digit reference = {worst:.2e}");
+    println!("Tillotson check points: worst relative error vs 40-digit reference = {worst:.2e}");
 }
 
 #[test]

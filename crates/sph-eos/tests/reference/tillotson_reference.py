@@ -1,7 +1,8 @@
 """Independent 40-digit reference values for tests/integration/tillotson.rs and hugoniot.rs.
 
-Evaluates the Tillotson formulas of verification.md §8 with mpmath (no code shared with the
-Rust crate) and solves the Rankine–Hugoniot condition P(rho, u_p^2/2) = rho0 u_p^2 rho/(rho - rho0).
+Evaluates the Tillotson formulas of docs/reference/tillotson.md with mpmath (no code shared with
+the Rust crate) and solves the Rankine–Hugoniot condition
+P(rho, u_p^2/2) = rho0 u_p^2 rho/(rho - rho0).
 Run: python3 tests/reference/tillotson_reference.py   (needs mpmath)
 """
 from mpmath import mp, mpf, exp, findroot

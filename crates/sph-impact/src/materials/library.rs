@@ -1,7 +1,8 @@
 //! The built-in materials, each with its sources: the study's basalt target and
 //! aluminium 2024 projectile (paper §3, §6, Tables 1, A1–A3) and granite, iron, copper and
-//! ice (verification.md §6–§8, §11). Where the specification gives no value for a
-//! parameter group, the constructor's documentation says what was chosen and why.
+//! ice (docs/reference/tillotson.md, strength_point_values.md and weibull_flaws.md). Where
+//! those pages give no value for a parameter group, the constructor's documentation says
+//! what was chosen and why.
 //!
 //! ```
 //! use sph_impact::materials::{builtin, library};
@@ -97,7 +98,7 @@ impl MaterialSpec {
     ///   order-of-magnitude only, see sph-eos).
     ///
     /// Derived: K = 26.7 GPa, E = 53.06 GPa, ν = 0.169, c_L = 4450.6 m/s at 2876 kg/m³
-    /// (4593.3 m/s at the 2700 kg/m³ of docs/verification.md, "Solid dynamics: elastic bars").
+    /// (4593.3 m/s at the 2700 kg/m³ of docs/reference/weibull_flaws.md, "Parameter sets").
     pub fn basalt_study() -> Self {
         MaterialSpec::new(
             "basalt-study",
@@ -195,13 +196,12 @@ impl MaterialSpec {
 
     /// `granite`.
     ///
-    /// - EOS: Tillotson granite (Allen 1967; verification.md §8), ρ0 = 2680 kg/m³.
-    /// - Strength: Lundborg of Collins, Melosh & Ivanov 2004 (verification.md §11):
-    ///   Y0 = 90 MPa, μ_i = 2, Y_M = 1.5 GPa, μ_d = 0.8; G = 27 GPa (miluphcuda's
-    ///   granite; neither source gives G).
+    /// - EOS: Tillotson granite (Allen 1967; docs/reference/tillotson.md), ρ0 = 2680 kg/m³.
+    /// - Strength: Lundborg of Collins, Melosh & Ivanov 2004: Y0 = 90 MPa, μ_i = 2,
+    ///   Y_M = 1.5 GPa, μ_d = 0.8 (docs/reference/strength_point_values.md, "Lundborg granite
+    ///   and radial return"); G = 27 GPa (miluphcuda's granite; neither source gives G).
     /// - Damage: Benz–Asphaug with Spheral's granite Weibull set, k = 1e33 m⁻³, m = 6.2
-    ///   (docs/verification.md, "Damage: tensile bar with Benz–Asphaug flaws"), crack speed
-    ///   0.4 c_L.
+    ///   (docs/reference/weibull_flaws.md, "Parameter sets"), crack speed 0.4 c_L.
     /// - Thermal: none. Granite melts over several hundred kelvin and no sourced latent
     ///   heats were found; give `[thermal]` data in a material file if melting matters.
     pub fn granite() -> Self {
@@ -215,22 +215,23 @@ impl MaterialSpec {
                 GRANITE_WEIBULL_M,
             ))
             .with_sources(&[
-                "density: Tillotson rho0 = 2680 kg/m^3 (Allen 1967; verification.md §8)",
-                "eos: Tillotson granite, Allen 1967 as tabulated in verification.md §8",
+                "density: Tillotson rho0 = 2680 kg/m^3 (Allen 1967; docs/reference/tillotson.md)",
+                "eos: Tillotson granite, Allen 1967 as tabulated in docs/reference/tillotson.md",
                 "strength: Lundborg, Collins, Melosh & Ivanov 2004 (MAPS 39:217) via miluphcuda \
                  granite.plasticity.cfg: Y0 = 90 MPa, mu_i = 2, Y_M = 1.5 GPa, mu_d = 0.8 \
-                 (verification.md §11)",
+                 (docs/reference/strength_point_values.md, \"Lundborg granite and radial \
+                 return\")",
                 "shear modulus: G = 27 GPa, miluphcuda's granite (chosen: Collins 2004 gives \
                  none)",
                 "damage: Benz-Asphaug, Spheral MaterialPropertiesLib granite: k = 1e27 cm^-3 = \
-                 1e33 m^-3, m = 6.2 (verification.md §7)",
+                 1e33 m^-3, m = 6.2 (docs/reference/weibull_flaws.md, \"Parameter sets\")",
                 "thermal: none (no single melting point; no sourced latent heats)",
             ])
     }
 
     /// `iron`.
     ///
-    /// - EOS: Tillotson iron (Melosh 1989, Table AII.3; verification.md §8),
+    /// - EOS: Tillotson iron (Melosh 1989, Table AII.3; docs/reference/tillotson.md),
     ///   ρ0 = 7800 kg/m³.
     /// - Strength: Johnson–Cook for Armco iron (Johnson & Cook 1983): A = 175 MPa,
     ///   B = 380 MPa, n = 0.32, C = 0.06, m = 0.55, T_m = 1811 K, T_r = 298 K. Chosen
@@ -248,8 +249,9 @@ impl MaterialSpec {
             )
             .with_thermal(ThermalModel::new(THERMAL_IRON).expect(VALID))
             .with_sources(&[
-                "density: Tillotson rho0 = 7800 kg/m^3 (Melosh 1989; verification.md §8)",
-                "eos: Tillotson iron, Melosh 1989 Table AII.3 (verification.md §8)",
+                "density: Tillotson rho0 = 7800 kg/m^3 (Melosh 1989; \
+                 docs/reference/tillotson.md)",
+                "eos: Tillotson iron, Melosh 1989 Table AII.3 (docs/reference/tillotson.md)",
                 "strength: Johnson-Cook, Armco iron of Johnson & Cook 1983: A = 175 MPa, B = \
                  380 MPa, n = 0.32, C = 0.06, m = 0.55, T_m = 1811 K; T_r = 298 K, rate 1/s \
                  (chosen: no iron strength in the spec)",
@@ -265,13 +267,14 @@ impl MaterialSpec {
     /// `copper`.
     ///
     /// - EOS: Tillotson copper (Tillotson 1962 via Spheral's material library;
-    ///   [`crate::materials::parameter_sets::tillotson_copper`]), ρ0 = 8900 kg/m³. The
-    ///   specification's §8 has no copper set.
-    /// - Strength: Johnson–Cook for OFHC copper (Johnson & Cook 1983; verification.md
-    ///   §6d): A = 90 MPa, B = 292 MPa, n = 0.31, C = 0.025, m = 1.09, T_m = 1356 K,
-    ///   T_r = 298 K; G = 47.7 GPa (Steinberg 1996's G0, §6c). Johnson–Cook rather than
-    ///   the §6c Steinberg–Guinan set because that set's ρ0 = 8930 kg/m³ differs from the
-    ///   Tillotson ρ0.
+    ///   [`crate::materials::parameter_sets::tillotson_copper`]), ρ0 = 8900 kg/m³.
+    ///   docs/reference/tillotson.md has no copper set.
+    /// - Strength: Johnson–Cook for OFHC copper (Johnson & Cook 1983;
+    ///   docs/reference/strength_point_values.md, "Johnson–Cook copper and aluminium"):
+    ///   A = 90 MPa, B = 292 MPa, n = 0.31, C = 0.025, m = 1.09, T_m = 1356 K, T_r = 298 K;
+    ///   G = 47.7 GPa (Steinberg 1996's G0; "Steinberg–Guinan copper" on the same page).
+    ///   Johnson–Cook rather than that Steinberg–Guinan set because its ρ0 = 8930 kg/m³
+    ///   differs from the Tillotson ρ0.
     /// - Damage: none (as for iron: no sourced failure data in the specification).
     /// - Thermal: CRC handbook data for Cu ([`crate::materials::parameter_sets::THERMAL_COPPER`]).
     pub fn copper() -> Self {
@@ -285,9 +288,11 @@ impl MaterialSpec {
                 "density: Tillotson rho0 = 8900 kg/m^3 (Spheral MaterialPropertiesLib copper)",
                 "eos: Tillotson copper, Tillotson 1962 via Spheral MaterialPropertiesLib (A = \
                  1.39 Mbar, B = 1.10 Mbar, E0 = 3.25e11 erg/g, E_iv = 1.35e10 erg/g, E_cv = \
-                 3.0e10 erg/g); not in verification.md §8",
-                "strength: Johnson-Cook OFHC copper, Johnson & Cook 1983 (verification.md §6d)",
-                "shear modulus: G = 47.7 GPa, copper G0 of Steinberg 1996 (verification.md §6c)",
+                 3.0e10 erg/g); not in docs/reference/tillotson.md",
+                "strength: Johnson-Cook OFHC copper, Johnson & Cook 1983 \
+                 (docs/reference/strength_point_values.md, \"Johnson–Cook copper and aluminium\")",
+                "shear modulus: G = 47.7 GPa, copper G0 of Steinberg 1996 \
+                 (docs/reference/strength_point_values.md, \"Steinberg–Guinan copper\")",
                 "damage: none (chosen: no copper failure data in the spec)",
                 "thermal: CRC Handbook data for Cu (c_p 24.44 J/mol/K, T_melt 1357.77 K, dH_fus \
                  13.26 kJ/mol, T_boil 2835 K, dH_vap 300.4 kJ/mol)",
@@ -296,13 +301,13 @@ impl MaterialSpec {
 
     /// `ice`: water ice of Benz & Asphaug (1999).
     ///
-    /// - EOS: Tillotson ice (Benz & Asphaug 1999; verification.md §8), ρ0 = 917 kg/m³.
+    /// - EOS: Tillotson ice (Benz & Asphaug 1999; docs/reference/tillotson.md), ρ0 = 917 kg/m³.
     /// - Strength: von Mises, Y = 1 GPa, G = 2.8 GPa (Benz & Asphaug 1999 as in
     ///   miluphcuda's ice file, which warns that Y may be much too large; measured ice
     ///   strengths are MPa-scale, Petrovic 2003). Chosen to keep the EOS, strength and
     ///   damage from one consistent source; the specification gives no ice strength.
     /// - Damage: Benz–Asphaug, k = 1.4e38 m⁻³, m = 9.6 (Benz & Asphaug 1999;
-    ///   docs/verification.md, "Damage: tensile bar with Benz–Asphaug flaws").
+    ///   docs/reference/weibull_flaws.md, "Parameter sets").
     /// - Thermal: none. The one-c_v caloric model cannot hold ice (c_p ≈ 2.1 kJ/kg/K) and
     ///   liquid water (4.2 kJ/kg/K) at once, and an icy body's reference temperature is
     ///   scene-specific; give `[thermal]` data in a material file.
@@ -314,12 +319,13 @@ impl MaterialSpec {
             )
             .with_damage(DamageSpec::benz_asphaug_weibull(WeibullParams::ICE_BA99))
             .with_sources(&[
-                "density: Tillotson rho0 = 917 kg/m^3 (Benz & Asphaug 1999; verification.md §8)",
-                "eos: Tillotson ice, Benz & Asphaug 1999 (verification.md §8)",
+                "density: Tillotson rho0 = 917 kg/m^3 (Benz & Asphaug 1999; \
+                 docs/reference/tillotson.md)",
+                "eos: Tillotson ice, Benz & Asphaug 1999 (docs/reference/tillotson.md)",
                 "strength: von Mises Y = 1 GPa, G = 2.8 GPa, Benz & Asphaug 1999 via \
                  miluphcuda's ice file (Y possibly much too large, cf. Petrovic 2003)",
                 "damage: Benz-Asphaug, k = 1.4e38 m^-3, m = 9.6 (Benz & Asphaug 1999; \
-                 verification.md §7)",
+                 docs/reference/weibull_flaws.md, \"Parameter sets\")",
                 "thermal: none (one constant c_v cannot represent ice and water)",
             ])
     }

@@ -8,8 +8,8 @@ use sph_strength::{JohnsonCookParams, VonMisesParams};
 /// ("copper", CGS: ρ0 = 8.9 g/cm³, A = 1.39 Mbar, B = 1.10 Mbar, a = 0.5, b = 1.5,
 /// α = β = 5, E0 = 3.25e11 erg/g, E_iv = 1.35e10 erg/g, E_cv = 3.00e10 erg/g). In SI:
 /// ρ0 = 8900 kg/m³, A = 139 GPa, B = 110 GPa, E0 = 32.5 MJ/kg, E_iv = 1.35 MJ/kg,
-/// E_cv = 3.0 MJ/kg. Not in verification.md §8; A, B and E0 agree with a second public
-/// impact code's table, E_iv and E_cv were not cross-checked against Tillotson 1962.
+/// E_cv = 3.0 MJ/kg. Not in docs/reference/tillotson.md; A, B and E0 agree with a second
+/// public impact code's table, E_iv and E_cv were not cross-checked against Tillotson 1962.
 pub fn tillotson_copper() -> TillotsonParams {
     TillotsonParams {
         rho0: 8900.0,
@@ -27,9 +27,10 @@ pub fn tillotson_copper() -> TillotsonParams {
 
 /// Armco iron, Johnson–Cook (Johnson & Cook 1983, Proc. 7th Int. Symp. Ballistics, 541,
 /// the iron of their table): A = 175 MPa, B = 380 MPa, n = 0.32, C = 0.06, m = 0.55,
-/// T_m = 1811 K. T_r = 298 K and ε̇0 = 1 /s as in the OFHC-copper set of verification.md
-/// §6d. G = 82 GPa, the handbook shear modulus of polycrystalline iron (CRC Handbook of
-/// Chemistry and Physics, elastic constants of metals: E = 211 GPa, ν = 0.29).
+/// T_m = 1811 K. T_r = 298 K and ε̇0 = 1 /s as in the OFHC-copper set of
+/// docs/reference/strength_point_values.md, "Johnson–Cook copper and aluminium". G = 82 GPa,
+/// the handbook shear modulus of polycrystalline iron (CRC Handbook of Chemistry and Physics,
+/// elastic constants of metals: E = 211 GPa, ν = 0.29).
 pub const ARMCO_IRON_JC: JohnsonCookParams = JohnsonCookParams {
     a: 175.0e6,
     b: 380.0e6,
@@ -52,10 +53,10 @@ pub const ICE_BA99_VON_MISES: VonMisesParams = VonMisesParams {
 };
 
 /// Weibull k of granite in Spheral's material library, 1e27 cm⁻³ = 1e33 m⁻³
-/// (docs/verification.md, "Damage: tensile bar with Benz–Asphaug flaws").
+/// (docs/reference/weibull_flaws.md, "Parameter sets").
 pub const GRANITE_WEIBULL_K: f64 = 1.0e33;
-/// Weibull m of granite in Spheral's material library (docs/verification.md, "Damage: tensile bar
-/// with Benz–Asphaug flaws").
+/// Weibull m of granite in Spheral's material library (docs/reference/weibull_flaws.md,
+/// "Parameter sets").
 pub const GRANITE_WEIBULL_M: f64 = 6.2;
 
 /// Iron, handbook thermal data (pure Fe, CRC Handbook of Chemistry and Physics):
@@ -83,7 +84,8 @@ pub const THERMAL_IRON: ThermalParams = ThermalParams {
 /// Copper, handbook thermal data (pure Cu, CRC Handbook of Chemistry and Physics):
 ///
 /// - c_v = 385 J/kg/K: c_p at 298 K, 24.44 J/mol/K ÷ 63.546 g/mol.
-/// - T_ref = 298 K, the Johnson–Cook T_r of the OFHC set (verification.md §6d).
+/// - T_ref = 298 K, the Johnson–Cook T_r of the OFHC set (docs/reference/strength_point_values.md,
+///   "Johnson–Cook copper and aluminium").
 /// - T_melt = 1357.77 K, the ITS-90 freezing point of copper (JC uses T_m = 1356 K).
 /// - L_melt = 2.09e5 J/kg: ΔH_fus = 13.26 kJ/mol ÷ 63.546 g/mol.
 /// - T_vap = 2835 K (2562 °C), normal boiling point.

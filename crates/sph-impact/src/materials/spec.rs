@@ -150,7 +150,7 @@ impl MaterialSpec {
     }
 
     /// c_L = √((K + 4G/3)/ρ) with the reference K and G at another density ρ (kg/m³):
-    /// e.g. basalt at 2700 kg/m³ (docs/verification.md, "Solid dynamics: elastic bars").
+    /// e.g. basalt at 2700 kg/m³ (docs/reference/weibull_flaws.md, "Parameter sets").
     pub fn longitudinal_wave_speed_at(&self, density: f64) -> Option<f64> {
         self.bulk_modulus()
             .map(|k| sph_damage::longitudinal_wave_speed(k, self.shear_modulus, density))
