@@ -307,6 +307,29 @@ fn viscosity_switch_is_read_and_a_bad_one_named() {
 }
 
 #[test]
+fn the_crater_depth_threshold_defaults_to_one_bin_and_is_checked() {
+    // A bad value is refused when the scene is read, naming its line and key.
+    let scene = |extra: &str| {
+        Scene::from_toml_str(&format!("{BASE}{extra}"), "scene.toml")
+            .and_then(|s| s.diagnostic_setup(2.0))
+            .map_err(|e| e.to_string())
+    };
+    // Default: one crater bin, which follows the grid (0.5 mm / 2).
+    let d = scene("").unwrap();
+    assert_eq!(d.crater_bin, 0.25e-3);
+    assert_eq!(d.crater_depth_threshold, d.crater_bin);
+    // Given: a fixed length, whatever the resolution.
+    let d = scene("crater_depth_threshold = 2e-3\n").unwrap();
+    assert_eq!((d.crater_bin, d.crater_depth_threshold), (0.25e-3, 2e-3));
+    for bad in ["0.0", "-1e-3"] {
+        let m = scene(&format!("crater_depth_threshold = {bad}\n")).unwrap_err();
+        assert!(m.starts_with("scene.toml:20:"), "{m}");
+        assert!(m.contains("diagnostics.crater_depth_threshold"), "{m}");
+        assert!(m.contains("must be positive"), "{m}");
+    }
+}
+
+#[test]
 fn bundled_scenes_round_trip() {
     for name in [
         "basalt_3.9kms.toml",
@@ -330,6 +353,8 @@ fn bundled_scenes_round_trip() {
             assert_eq!(scene.bodies[0].velocity, [0.0, 0.0, -u * 1e3]);
             let setup = scene.diagnostic_setup(1.0).unwrap();
             assert!((setup.impact_speed - u * 1e3).abs() < 1e-9);
+            // One bin, the default depth threshold of the crater.
+            assert_eq!(setup.crater_depth_threshold, setup.crater_bin);
             let s = scene.scheme();
             assert_eq!((s.n_target, s.cfl), (2.5, 0.25));
             assert_eq!(s.artificial_stress.exponent, 4);

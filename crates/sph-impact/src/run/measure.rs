@@ -102,10 +102,11 @@ impl Measurer {
         )
     }
 
-    /// The crater options: the setup's bin, one bin as the depth threshold, each
-    /// particle covering its own spacing, the setup's spall damage.
+    /// The crater options: the setup's bin and depth threshold, each particle covering
+    /// its own spacing, the setup's spall damage.
     pub fn crater_options(&self) -> CraterOptions {
         let mut o = CraterOptions::new(self.diagnostic_geometry(), self.setup.crater_bin);
+        o.depth_threshold = self.setup.crater_depth_threshold;
         o.footprint = true;
         o.spall_damage = self.setup.spall_damage;
         o.density_cut = self.setup.rubble_density.map(|f| DensityCut {
@@ -201,6 +202,7 @@ mod tests {
                 surface_z: 0.0,
                 impact_speed: 1000.0,
                 crater_bin: 1e-3,
+                crater_depth_threshold: 1e-3,
                 ejecta_tolerance: 0.0,
                 ejecta_bin: 0.02,
                 spall_damage: None,
@@ -386,6 +388,7 @@ mod tests {
     fn a_graded_bed_reads_no_crater_untouched_and_its_bowl_when_carved() {
         let mut m = measurer(None);
         m.setup.crater_bin = 0.5e-3;
+        m.setup.crater_depth_threshold = 0.5e-3;
         let untouched = graded_bed((0.0, 0.0));
         // Against the plane the untouched bed reads its top layer's depth, half the
         // local spacing: 1 mm where the rings are 2 mm apart.
@@ -402,5 +405,30 @@ mod tests {
         let c = m.crater(&graded_bed((3.1e-3, 4e-3))).unwrap().unwrap();
         assert!((c.depth - 4.0e-3).abs() < 1e-12, "{}", c.depth);
         assert!((c.diameter - 6.0e-3).abs() < 1e-12, "{}", c.diameter);
+    }
+
+    #[test]
+    fn the_depth_threshold_decides_whether_a_shallow_pit_is_crater() {
+        let mut m = measurer(None);
+        m.setup.crater_bin = 0.5e-3;
+        let untouched = graded_bed((0.0, 0.0));
+        // A pit 2 mm deep (floor at the layer −2.25 mm, top −0.25 mm) out to r = 3.1 mm.
+        let pit = graded_bed((3.1e-3, 2e-3));
+        let read = |m: &mut Measurer, threshold: f64| {
+            m.setup.crater_depth_threshold = threshold;
+            m.calibrate(&untouched).unwrap();
+            m.crater(&pit).unwrap().unwrap()
+        };
+        let shallow = read(&mut m, 1.0e-3);
+        assert!((shallow.depth - 2.0e-3).abs() < 1e-12, "{}", shallow.depth);
+        assert!(
+            (shallow.diameter - 6.0e-3).abs() < 1e-12,
+            "{}",
+            shallow.diameter
+        );
+        // Deeper than the pit: no crater, and its depth is that of the innermost bin.
+        let strict = read(&mut m, 3.0e-3);
+        assert_eq!(strict.diameter, 0.0);
+        assert!((strict.depth - 2.0e-3).abs() < 1e-12, "{}", strict.depth);
     }
 }

@@ -27,6 +27,8 @@ pub struct DiagnosticSetup {
     pub impact_speed: f64,
     /// Radial bin of the crater profile (m).
     pub crater_bin: f64,
+    /// Depth a profile bin must exceed to be crater (m).
+    pub crater_depth_threshold: f64,
     /// Ejecta height tolerance above the surface (m).
     pub ejecta_tolerance: f64,
     /// Bin width of the ejecta distribution in v_z/U.
@@ -161,6 +163,13 @@ impl Scene {
                 ),
             ));
         }
+        // One bin by default: an untouched surface's particle-scale roughness is not
+        // crater (sph_diagnostics::CraterOptions::depth_threshold).
+        let crater_depth_threshold = length(
+            "diagnostics.crater_depth_threshold",
+            d.crater_depth_threshold,
+            crater_bin,
+        )?;
         // By default the finest target particles' own support radius at rest.
         let axis_kernel_width = length(
             "diagnostics.axis_kernel_width",
@@ -224,6 +233,7 @@ impl Scene {
             surface_z,
             impact_speed,
             crater_bin,
+            crater_depth_threshold,
             ejecta_tolerance,
             ejecta_bin,
             spall_damage,

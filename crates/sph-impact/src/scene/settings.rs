@@ -122,6 +122,12 @@ pub struct DiagnosticsSettings {
     /// Radial bin of the crater profile (m); default the target's finest spacing.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub crater_bin: Option<f64>,
+    /// Depth (m) a bin of the crater profile must exceed to count as crater (diameter,
+    /// removed diameter); default one `crater_bin`. The default follows the grid; a fixed
+    /// length reads every resolution of a convergence study by the same rule
+    /// (docs/diagnostics.md §4).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub crater_depth_threshold: Option<f64>,
     /// Height above the surface an ejecta particle must pass (m); default 0 (the study).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub ejecta_tolerance: Option<f64>,
