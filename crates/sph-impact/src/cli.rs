@@ -100,6 +100,106 @@ pub fn verify(
     Ok(())
 }
 
+/// `sph-impact study FILE`: reads and checks the study, runs its unfinished points into
+/// `out` (default `out/<study file stem>`), writes its table and prints it (Markdown).
+/// `options.jobs` 0 runs as many points at a time as the cores hold runs of the study's
+/// `threads_per_run`.
+/// A point that fails is recorded and the others run on; the command then fails (exit 1)
+/// naming how many failed. A stop request (SIGINT, SIGTERM) ends the running points at a
+/// checkpoint, which the next call resumes from (exit 130).
+pub fn study(
+    file: &Path,
+    out: Option<&Path>,
+    options: &crate::study::StudyOptions,
+) -> Result<crate::study::StudyTable, CommandError> {
+    use crate::study::{PointStatus, Study, run_study};
+    let study = Study::from_toml_file(file).map_err(CommandError::bad_input)?;
+    let dir = study_directory(file, out);
+    let mut options = options.clone();
+    if options.jobs == 0 {
+        let cores = std::thread::available_parallelism().map_or(1, |n| n.get());
+        options.jobs = (cores / study.threads_per_run).max(1);
+    }
+    let options = &options;
+    let table = run_study(&study, &dir, options).map_err(study_error)?;
+    if let Some(k) = options.only {
+        // One task of a job array: its point's outcome is the exit code.
+        let row = &table.rows[k];
+        return match row.status {
+            PointStatus::Failed => Err(CommandError::failed(format!(
+                "point {k} failed: {}",
+                row.error.as_deref().unwrap_or_default()
+            ))),
+            PointStatus::Pending if options.stop.requested() => Err(CommandError {
+                code: CommandError::INTERRUPTED,
+                message: format!("point {k} stopped; the same command continues it"),
+            }),
+            _ => Ok(table),
+        };
+    }
+    if !options.quiet {
+        write_stdout(&format!(
+            "study directory      {}\n\n{}",
+            crate::input::printable(&dir.display().to_string()),
+            table.to_markdown()
+        ))?;
+    }
+    let count = |s: PointStatus| table.rows.iter().filter(|r| r.status == s).count();
+    if options.stop.requested() {
+        return Err(CommandError {
+            code: CommandError::INTERRUPTED,
+            message: format!(
+                "study stopped: {} of {} points done; the same command continues it",
+                count(PointStatus::Done),
+                table.rows.len()
+            ),
+        });
+    }
+    let failed = count(PointStatus::Failed);
+    if failed > 0 {
+        return Err(CommandError::failed(format!(
+            "{failed} of {} points failed (their errors are in study.md; --retry-failed runs them again)",
+            table.rows.len()
+        )));
+    }
+    Ok(table)
+}
+
+/// The study directory: `--out`, else `out/<study file stem>`.
+fn study_directory(file: &Path, out: Option<&Path>) -> std::path::PathBuf {
+    match out {
+        Some(d) => d.to_owned(),
+        None => Path::new("out").join(
+            file.file_stem()
+                .map_or_else(|| "study".into(), |s| s.to_string_lossy().into_owned()),
+        ),
+    }
+}
+
+fn study_error(e: crate::study::StudyError) -> CommandError {
+    if e.bad_input {
+        CommandError::bad_input(e)
+    } else {
+        CommandError::failed(e)
+    }
+}
+
+/// `sph-impact study FILE --emit slurm`: writes the points' scenes and `study.sbatch`
+/// into the study directory (study::emit_slurm) and prints the script's path.
+pub fn study_emit_slurm(file: &Path, out: Option<&Path>, quiet: bool) -> Result<(), CommandError> {
+    let study = crate::study::Study::from_toml_file(file).map_err(CommandError::bad_input)?;
+    let dir = study_directory(file, out);
+    let script = crate::study::emit_slurm(&study, file, &dir).map_err(study_error)?;
+    if !quiet {
+        write_stdout(&format!(
+            "{} points; submit with: sbatch {}\n",
+            study.points().len(),
+            crate::input::printable(&script.display().to_string())
+        ))?;
+    }
+    Ok(())
+}
+
 /// Writes `text` to standard output. A closed pipe (`sph-impact materials | head -1`) is
 /// no failure — the reader took what it wanted — so the text is dropped and the command
 /// still succeeds; any other write error fails it (exit code 1). `println!` would panic

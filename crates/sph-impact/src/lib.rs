@@ -27,6 +27,7 @@ pub mod plot;
 pub mod run;
 pub mod scene;
 pub mod solver;
+pub mod study;
 pub mod verify;
 
 pub use solver::*;

@@ -77,6 +77,40 @@ enum Command {
         #[arg(long)]
         end_time: Option<f64>,
     },
+    /// Run a parameter study (TOML; docs/studies.md): the base scene at every
+    /// combination of the parameters' values, points side by side, resumable; writes
+    /// study.csv, study.json and study.md into the study directory.
+    Study {
+        /// The study file.
+        study: PathBuf,
+        /// Study directory (default: out/<study file stem>). Run again with the same
+        /// directory to continue a stopped study.
+        #[arg(long)]
+        out: Option<PathBuf>,
+        /// Points run at a time (default: the cores divided by the study's
+        /// threads_per_run).
+        #[arg(long)]
+        jobs: Option<usize>,
+        /// Run again the points that failed before.
+        #[arg(long)]
+        retry_failed: bool,
+        /// Run at most this many points now, then stop (e.g. within a batch job's limit).
+        #[arg(long)]
+        max_points: Option<usize>,
+        /// Run only point K (from 0), without writing the table: one task of a job array.
+        #[arg(long, value_name = "K", conflicts_with_all = ["max_points", "collect", "emit"])]
+        point: Option<usize>,
+        /// Write the table from the points already run, without running any.
+        #[arg(long, conflicts_with_all = ["max_points", "emit"])]
+        collect: bool,
+        /// Write the points' scenes and a job-array script into the study directory
+        /// instead of running: `slurm` (study.sbatch).
+        #[arg(long, value_parser = ["slurm"])]
+        emit: Option<String>,
+        /// No progress lines and no table on standard output.
+        #[arg(long)]
+        quiet: bool,
+    },
     /// List the built-in materials and their parameters.
     Materials {
         /// Print one JSON array with every parameter and source.
@@ -135,7 +169,7 @@ fn main() -> ExitCode {
     }
     let Some(command) = cli.command else {
         eprintln!(
-            "error: no command given: run, check, materials or verify (`sph-impact --help` \
+            "error: no command given: run, check, study, materials or verify (`sph-impact --help` \
              says more)"
         );
         return ExitCode::from(CommandError::BAD_INPUT);
@@ -180,6 +214,39 @@ fn main() -> ExitCode {
             end_time,
         } => sph_impact::cli::check_scene(&scene, json, cli.threads, resolution_scale, end_time)
             .map(|_| ()),
+        Command::Study {
+            study,
+            out,
+            jobs,
+            retry_failed,
+            max_points,
+            point,
+            collect,
+            emit,
+            quiet,
+        } => {
+            if emit.is_some() {
+                return finish(sph_impact::cli::study_emit_slurm(
+                    &study,
+                    out.as_deref(),
+                    quiet,
+                ));
+            }
+            let options = sph_impact::study::StudyOptions {
+                // 0: the cores divided by the study's threads per run (cli::study).
+                jobs: jobs.unwrap_or(0),
+                retry_failed,
+                max_points: if collect { Some(0) } else { max_points },
+                only: point,
+                quiet,
+                stop: StopFlag::new(),
+            };
+            if let Err(e) = options.stop.on_signals() {
+                eprintln!("error: cannot catch SIGINT/SIGTERM: {e}");
+                return ExitCode::from(CommandError::FAILED);
+            }
+            sph_impact::cli::study(&study, out.as_deref(), &options).map(|_| ())
+        }
         Command::Materials { json } => sph_impact::cli::materials(json),
         Command::Verify {
             problem,
@@ -204,6 +271,11 @@ fn main() -> ExitCode {
             deposit,
         ),
     };
+    finish(result)
+}
+
+/// The exit code of a command's result, with its error printed.
+fn finish(result: Result<(), CommandError>) -> ExitCode {
     match result {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {

@@ -52,7 +52,7 @@ mod roles;
 mod section;
 mod settings;
 mod solver_settings;
-mod spans;
+pub(crate) mod spans;
 
 pub use body::{BodySpec, DEFAULT_MASS_TOLERANCE, PlacementSpec, ShapeSpec};
 pub use build::{BodyInfo, Built};
