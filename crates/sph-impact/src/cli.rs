@@ -165,6 +165,33 @@ pub fn study(
     Ok(table)
 }
 
+/// `sph-impact fit FILE`: reads and checks the fit, runs the search into `out` (default
+/// `out/<fit file stem>`), writes `fit.csv`, `fit.json`, `fit.md` and prints `fit.md`.
+/// A stop request ends it at a checkpoint (exit 130); the same command continues it.
+pub fn fit(
+    file: &Path,
+    out: Option<&Path>,
+    options: &crate::study::StudyOptions,
+) -> Result<crate::study::FitReport, CommandError> {
+    let fit = crate::study::Fit::from_toml_file(file).map_err(CommandError::bad_input)?;
+    let dir = study_directory(file, out);
+    let report = crate::study::run_fit(&fit, &dir, options).map_err(study_error)?;
+    if !options.quiet {
+        let md = std::fs::read_to_string(dir.join("fit.md")).unwrap_or_default();
+        write_stdout(&format!(
+            "fit directory        {}\n\n{md}",
+            crate::input::printable(&dir.display().to_string())
+        ))?;
+    }
+    if options.stop.requested() {
+        return Err(CommandError {
+            code: CommandError::INTERRUPTED,
+            message: "fit stopped; the same command continues it".into(),
+        });
+    }
+    Ok(report)
+}
+
 /// The study directory: `--out`, else `out/<study file stem>`.
 fn study_directory(file: &Path, out: Option<&Path>) -> std::path::PathBuf {
     match out {

@@ -111,6 +111,20 @@ enum Command {
         #[arg(long)]
         quiet: bool,
     },
+    /// Fit free parameters of a scene to target metrics under constraints (TOML;
+    /// docs/studies.md, "Fits"): Nelder–Mead over runs, resumable; writes fit.csv,
+    /// fit.json and fit.md.
+    Fit {
+        /// The fit file.
+        fit: PathBuf,
+        /// Fit directory (default: out/<fit file stem>). Run again with the same
+        /// directory to continue a stopped fit, or one given a larger budget.
+        #[arg(long)]
+        out: Option<PathBuf>,
+        /// No table on standard output.
+        #[arg(long)]
+        quiet: bool,
+    },
     /// List the built-in materials and their parameters.
     Materials {
         /// Print one JSON array with every parameter and source.
@@ -169,7 +183,7 @@ fn main() -> ExitCode {
     }
     let Some(command) = cli.command else {
         eprintln!(
-            "error: no command given: run, check, study, materials or verify (`sph-impact --help` \
+            "error: no command given: run, check, study, fit, materials or verify (`sph-impact --help` \
              says more)"
         );
         return ExitCode::from(CommandError::BAD_INPUT);
@@ -246,6 +260,17 @@ fn main() -> ExitCode {
                 return ExitCode::from(CommandError::FAILED);
             }
             sph_impact::cli::study(&study, out.as_deref(), &options).map(|_| ())
+        }
+        Command::Fit { fit, out, quiet } => {
+            let options = sph_impact::study::StudyOptions {
+                quiet,
+                ..Default::default()
+            };
+            if let Err(e) = options.stop.on_signals() {
+                eprintln!("error: cannot catch SIGINT/SIGTERM: {e}");
+                return ExitCode::from(CommandError::FAILED);
+            }
+            sph_impact::cli::fit(&fit, out.as_deref(), &options).map(|_| ())
         }
         Command::Materials { json } => sph_impact::cli::materials(json),
         Command::Verify {

@@ -30,6 +30,7 @@
 mod axis;
 mod derived;
 mod error;
+mod fit;
 pub mod metric;
 mod plots;
 mod runner;
@@ -42,6 +43,7 @@ mod table;
 pub use axis::{Axis, Point, Range, Spacing, cell, points};
 pub use derived::{Derived, StaticStrength};
 pub use error::StudyError;
+pub use fit::{Constraint, Evaluation, Fit, FitReport, Free, Target, run_fit};
 pub use runner::{StudyOptions, point_dir, run_study};
 pub use slurm::emit_slurm;
 pub use study::{Reference, Study};

@@ -155,7 +155,7 @@ pub fn run_study(
 }
 
 /// How one point's run ended.
-enum Outcome {
+pub(crate) enum Outcome {
     Done(f64),
     Failed(String),
     Stopped,
@@ -163,7 +163,7 @@ enum Outcome {
 
 /// Runs one point and records how it ended. `Err` only when the study directory cannot be
 /// written: a run that fails is recorded in `result.json` and the study goes on.
-fn run_point(
+pub(crate) fn run_point(
     study: &Study,
     dir: &Path,
     point: &Point,

@@ -112,38 +112,26 @@ impl Study {
     /// Reads and [checks](Self::check) a study file; its `scene` is read relative to the
     /// file's directory.
     pub fn from_toml_file(path: impl AsRef<Path>) -> Result<Self, StudyError> {
-        let path = path.as_ref();
-        let text = crate::input::read_text(path, crate::input::MAX_INPUT_BYTES)
-            .map_err(|e| StudyError::bad(format!("{}: {e}", path.display())))?;
-        let dir = path.parent().unwrap_or(Path::new("."));
-        Self::from_toml_str(&text, &path.display().to_string(), dir)
+        let (text, origin, dir) = read_path(path.as_ref())?;
+        Self::from_toml_str(&text, &origin, &dir)
     }
 
     /// Reads and checks a study from TOML text; `origin` names it in messages and `dir` is
     /// where its `scene` path is relative to.
     pub fn from_toml_str(text: &str, origin: &str, dir: &Path) -> Result<Self, StudyError> {
-        let map = SourceMap::new(origin, text).map_err(|e| parse_error(&e, origin, text))?;
-        let file: StudyFile = toml::from_str(text).map_err(|e| {
-            let mut err = parse_error(&e, origin, text);
-            if let Some(k) = e.span().and_then(|s| map.path_at(s.start)) {
-                err.key = Some(k);
-            }
-            err
-        })?;
+        let (file, map): (StudyFile, _) = read_file(text, origin)?;
         let locate = |e: StudyError| locate(&map, e);
-        let scene_path = dir.join(&file.scene);
-        let scene =
-            crate::input::read_text(&scene_path, crate::input::MAX_INPUT_BYTES).map_err(|e| {
-                locate(StudyError::at_key(
-                    "scene",
-                    format!("{}: {e}", scene_path.display()),
-                ))
-            })?;
-        let mut study = Study::new(scene, scene_path.display().to_string());
-        study.description = file.description;
-        study.resolution_scale = file.resolution_scale.unwrap_or(1.0);
-        study.end_time = file.end_time;
-        study.threads_per_run = file.threads_per_run.unwrap_or(1);
+        let mut study = base_study(
+            &map,
+            dir,
+            &file.scene,
+            RunSettings {
+                description: file.description,
+                resolution_scale: file.resolution_scale,
+                end_time: file.end_time,
+                threads_per_run: file.threads_per_run,
+            },
+        )?;
         study.metrics = file.metrics;
         study.derived = file.derived;
         for (i, p) in file.parameter.into_iter().enumerate() {
@@ -406,7 +394,65 @@ fn scene_message(e: &crate::scene::SceneError) -> String {
     e.to_string()
 }
 
-fn locate(map: &SourceMap, mut e: StudyError) -> StudyError {
+/// A study or fit file's text, its name for messages and the directory its scene path
+/// is relative to.
+pub(crate) fn read_path(path: &Path) -> Result<(String, String, std::path::PathBuf), StudyError> {
+    let text = crate::input::read_text(path, crate::input::MAX_INPUT_BYTES)
+        .map_err(|e| StudyError::bad(format!("{}: {e}", path.display())))?;
+    let dir = path.parent().unwrap_or(Path::new(".")).to_owned();
+    Ok((text, path.display().to_string(), dir))
+}
+
+/// Parses a study or fit file: its keys' places and its contents, with a parser error
+/// located at file, line and key.
+pub(crate) fn read_file<T: serde::de::DeserializeOwned>(
+    text: &str,
+    origin: &str,
+) -> Result<(T, SourceMap), StudyError> {
+    let map = SourceMap::new(origin, text).map_err(|e| parse_error(&e, origin, text))?;
+    let file: T = toml::from_str(text).map_err(|e| {
+        let mut err = parse_error(&e, origin, text);
+        if let Some(k) = e.span().and_then(|s| map.path_at(s.start)) {
+            err.key = Some(k);
+        }
+        err
+    })?;
+    Ok((file, map))
+}
+
+/// The run options a study or fit file gives beside its scene.
+pub(crate) struct RunSettings {
+    pub description: String,
+    pub resolution_scale: Option<f64>,
+    pub end_time: Option<f64>,
+    pub threads_per_run: Option<usize>,
+}
+
+/// A study of the scene file `scene` (relative to `dir`) with the file's run options and
+/// nothing else yet; a scene that cannot be read is an error at the file's `scene` key.
+pub(crate) fn base_study(
+    map: &SourceMap,
+    dir: &Path,
+    scene: &str,
+    settings: RunSettings,
+) -> Result<Study, StudyError> {
+    let scene_path = dir.join(scene);
+    let text =
+        crate::input::read_text(&scene_path, crate::input::MAX_INPUT_BYTES).map_err(|e| {
+            locate(
+                map,
+                StudyError::at_key("scene", format!("{}: {e}", scene_path.display())),
+            )
+        })?;
+    let mut study = Study::new(text, scene_path.display().to_string());
+    study.description = settings.description;
+    study.resolution_scale = settings.resolution_scale.unwrap_or(1.0);
+    study.end_time = settings.end_time;
+    study.threads_per_run = settings.threads_per_run.unwrap_or(1);
+    Ok(study)
+}
+
+pub(crate) fn locate(map: &SourceMap, mut e: StudyError) -> StudyError {
     if e.location.is_none() {
         e.location = Some(Box::new(match &e.key {
             Some(k) => map.locate(k),

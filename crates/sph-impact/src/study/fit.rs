@@ -1,0 +1,705 @@
+//! The inverse search (`sph-impact fit`, paper §3.7): free parameters within bounds, found
+//! by Nelder–Mead (argmin) to bring chosen metrics of the run to their targets, under
+//! constraints on derived metrics (the static strength of the Brazilian disc within ±11 %
+//! of the measured 9.8 MPa, as the study required).
+//!
+//! The search runs in the unit cube: each free parameter maps [0, 1] onto its bounds,
+//! linearly or logarithmically. The objective is Σ w (y − t)²/t² over the targets. A point
+//! outside the bounds or against a constraint is not run: its objective is a penalty that
+//! grows with the violation, so the simplex turns back. A run that fails counts as a large
+//! objective and is recorded.
+//!
+//! Every run is a point of the fit's directory (`search/points/NNNN/`, as a study's), in
+//! the order the search asks for them. The search is deterministic, so a stopped or killed
+//! fit run again replays it: the runs already done are read back and the search goes on
+//! from there; a larger `budget` continues a finished one. After the search, one run per
+//! free parameter a small step from the best point (`sensitivity/run-BEST/points/K/`) gives the
+//! local sensitivity of each target metric to each parameter.
+
+use crate::scene::Scene;
+use crate::study::axis::{Point, Spacing};
+use crate::study::derived::Derived;
+use crate::study::error::StudyError;
+use crate::study::runner::{
+    Outcome, check_stored_scene, point_dir, read_record, run_point, stored_scene,
+};
+use crate::study::study::{RunSettings, Study, base_study, locate, read_file, read_path};
+use crate::study::table::PointStatus;
+use crate::study::{StudyOptions, metric};
+use serde::{Deserialize, Serialize};
+use std::cell::RefCell;
+use std::fmt::Write as _;
+use std::path::Path;
+
+/// The objective of a point that is not run (outside the bounds, against a constraint):
+/// above any objective of a run, growing with the violation.
+const PENALTY: f64 = 1.0e6;
+
+/// The step of the sensitivity runs, as a share of each parameter's (scaled) range.
+const SENSITIVITY_STEP: f64 = 0.05;
+
+/// A free parameter: a scene path (study::scene_path) and its bounds.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Free {
+    /// The scene path.
+    pub path: String,
+    /// Lower bound.
+    pub min: f64,
+    /// Upper bound (above `min`).
+    pub max: f64,
+    /// Linear (default) or log (both bounds positive: a Weibull k).
+    #[serde(default)]
+    pub scale: Spacing,
+    /// Where the search starts (default: the middle of the range, geometric for log).
+    #[serde(default)]
+    pub start: Option<f64>,
+}
+
+impl Free {
+    /// The value at unit coordinate `u` (0 at `min`, 1 at `max`; the start as written at
+    /// its own coordinate, which the round trip through the logarithm would perturb).
+    pub fn value(&self, u: f64) -> f64 {
+        if let Some(s) = self.start
+            && self.unit(s) == u
+        {
+            return s;
+        }
+        match self.scale {
+            Spacing::Linear => self.min + (self.max - self.min) * u,
+            Spacing::Log => self.min * (self.max / self.min).powf(u),
+        }
+    }
+
+    /// The unit coordinate of `value`.
+    pub fn unit(&self, value: f64) -> f64 {
+        match self.scale {
+            Spacing::Linear => (value - self.min) / (self.max - self.min),
+            Spacing::Log => (value / self.min).ln() / (self.max / self.min).ln(),
+        }
+    }
+}
+
+/// A target: a metric of the run (a key of summary.json), its value and weight.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Target {
+    /// The metric.
+    pub metric: String,
+    /// The value sought (non-zero).
+    pub value: f64,
+    /// Weight in the objective (default 1).
+    #[serde(default = "one")]
+    pub weight: f64,
+}
+
+fn one() -> f64 {
+    1.0
+}
+
+/// A constraint on a derived metric: `min ≤ value ≤ max` (either bound may be left out).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Constraint {
+    /// The derived metric's name.
+    pub derived: String,
+    /// Lower bound.
+    #[serde(default)]
+    pub min: Option<f64>,
+    /// Upper bound.
+    #[serde(default)]
+    pub max: Option<f64>,
+}
+
+impl Constraint {
+    /// How far `value` is outside the bounds, relative to the bound (0 inside).
+    fn violation(&self, value: f64) -> f64 {
+        if !value.is_finite() {
+            return 1.0;
+        }
+        let below = self.min.map_or(0.0, |m| ((m - value) / m.abs()).max(0.0));
+        let above = self.max.map_or(0.0, |m| ((value - m) / m.abs()).max(0.0));
+        below + above
+    }
+}
+
+/// A fit: the base scene and run options (a [`Study`] without axes: its metrics are the
+/// targets' and its derived metrics those the constraints name), the free parameters,
+/// the targets, the constraints and the run budget.
+#[derive(Clone, Debug)]
+pub struct Fit {
+    /// The base scene, run options and derived metrics.
+    pub study: Study,
+    /// The free parameters.
+    pub free: Vec<Free>,
+    /// The targets.
+    pub targets: Vec<Target>,
+    /// The constraints.
+    pub constraints: Vec<Constraint>,
+    /// The most runs of the search (the sensitivity runs come on top).
+    pub budget: usize,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct FitFile {
+    #[serde(default)]
+    description: String,
+    scene: String,
+    resolution_scale: Option<f64>,
+    end_time: Option<f64>,
+    threads_per_run: Option<usize>,
+    budget: usize,
+    free: Vec<Free>,
+    target: Vec<Target>,
+    #[serde(default)]
+    constraint: Vec<Constraint>,
+    #[serde(default)]
+    derived: Vec<Derived>,
+}
+
+impl Fit {
+    /// Reads and checks a fit file; its `scene` is relative to the file's directory.
+    pub fn from_toml_file(path: impl AsRef<Path>) -> Result<Self, StudyError> {
+        let (text, origin, dir) = read_path(path.as_ref())?;
+        Self::from_toml_str(&text, &origin, &dir)
+    }
+
+    /// Reads and checks a fit from TOML text (`origin` names it in messages; `dir` is where
+    /// its scene path is relative to).
+    pub fn from_toml_str(text: &str, origin: &str, dir: &Path) -> Result<Self, StudyError> {
+        let (file, map): (FitFile, _) = read_file(text, origin)?;
+        let mut study = base_study(
+            &map,
+            dir,
+            &file.scene,
+            RunSettings {
+                description: file.description,
+                resolution_scale: file.resolution_scale,
+                end_time: file.end_time,
+                threads_per_run: file.threads_per_run,
+            },
+        )?;
+        study.metrics = file.target.iter().map(|t| t.metric.clone()).collect();
+        study.derived = file.derived;
+        let fit = Fit {
+            study,
+            free: file.free,
+            targets: file.target,
+            constraints: file.constraint,
+            budget: file.budget,
+        };
+        fit.check().map_err(|e| locate(&map, e))?;
+        Ok(fit)
+    }
+
+    /// Checks the fit: the study part (options, metrics, derived), the bounds and start of
+    /// each free parameter, the targets, the constraints, and that the start point's scene
+    /// reads and satisfies the constraints.
+    pub fn check(&self) -> Result<(), StudyError> {
+        self.study.check()?;
+        if self.budget < self.free.len() + 1 {
+            return Err(StudyError::at_key(
+                "budget",
+                format!(
+                    "must allow at least the starting simplex, {} runs, not {}",
+                    self.free.len() + 1,
+                    self.budget
+                ),
+            ));
+        }
+        if self.free.is_empty() {
+            return Err(StudyError::at_key(
+                "free",
+                "give at least one free parameter",
+            ));
+        }
+        for (i, f) in self.free.iter().enumerate() {
+            let key = |k: &str| format!("free[{i}].{k}");
+            if !(f.min.is_finite() && f.max.is_finite()) || f.min >= f.max {
+                return Err(StudyError::at_key(
+                    key("max"),
+                    format!(
+                        "the bounds are empty or reversed: min {} max {}",
+                        f.min, f.max
+                    ),
+                ));
+            }
+            if f.scale == Spacing::Log && f.min <= 0.0 {
+                return Err(StudyError::at_key(
+                    key("min"),
+                    format!("a log scale needs positive bounds, not {}", f.min),
+                ));
+            }
+            if let Some(s) = f.start
+                && !(f.min..=f.max).contains(&s)
+            {
+                return Err(StudyError::at_key(
+                    key("start"),
+                    format!("{s} is outside the bounds [{}, {}]", f.min, f.max),
+                ));
+            }
+            if self.free[..i].iter().any(|g| g.path == f.path) {
+                return Err(StudyError::at_key(
+                    key("path"),
+                    format!("`{}` is free twice", f.path),
+                ));
+            }
+        }
+        for (i, t) in self.targets.iter().enumerate() {
+            if !(t.value.is_finite() && t.value != 0.0) {
+                return Err(StudyError::at_key(
+                    format!("target[{i}].value"),
+                    format!(
+                        "must be a finite, non-zero number (errors are relative), not {}",
+                        t.value
+                    ),
+                ));
+            }
+            if !(t.weight.is_finite() && t.weight > 0.0) {
+                return Err(StudyError::at_key(
+                    format!("target[{i}].weight"),
+                    format!("must be positive, not {}", t.weight),
+                ));
+            }
+        }
+        for (i, c) in self.constraints.iter().enumerate() {
+            if !self.study.derived.iter().any(|d| d.name == c.derived) {
+                return Err(StudyError::at_key(
+                    format!("constraint[{i}].derived"),
+                    format!("`{}` is not one of the `[[derived]]` metrics", c.derived),
+                ));
+            }
+            match (c.min, c.max) {
+                (None, None) => {
+                    return Err(StudyError::at_key(
+                        format!("constraint[{i}]"),
+                        "give `min`, `max` or both",
+                    ));
+                }
+                (Some(a), Some(b)) if a >= b => {
+                    return Err(StudyError::at_key(
+                        format!("constraint[{i}].max"),
+                        format!("the bounds are empty or reversed: min {a} max {b}"),
+                    ));
+                }
+                _ => {}
+            }
+        }
+        let start = self.start();
+        let point = self.point(0, &start);
+        let text = self.study.point_scene(&point)?;
+        let scene = Scene::from_toml_str(&text, &self.study.scene_origin).map_err(|e| {
+            let mut e = e;
+            e.location = None;
+            StudyError::at_key("free", format!("the start point's scene is refused: {e}"))
+        })?;
+        let violation = self.violation(&scene);
+        if violation > 0.0 {
+            return Err(StudyError::at_key(
+                "constraint",
+                format!(
+                    "the start point ({}) violates the constraints (by {violation:.3} relative): give a `start` inside them",
+                    crate::study::study::describe(&point)
+                ),
+            ));
+        }
+        Ok(())
+    }
+
+    /// The start in unit coordinates.
+    fn start(&self) -> Vec<f64> {
+        self.free
+            .iter()
+            .map(|f| f.start.map_or(0.5, |s| f.unit(s)))
+            .collect()
+    }
+
+    /// The point of run `index` at unit coordinates `u`.
+    fn point(&self, index: usize, u: &[f64]) -> Point {
+        Point {
+            index,
+            settings: self
+                .free
+                .iter()
+                .zip(u)
+                .map(|(f, &u)| (f.path.clone(), toml::Value::Float(f.value(u))))
+                .collect(),
+        }
+    }
+
+    /// The summed relative violation of the constraints by a scene.
+    fn violation(&self, scene: &Scene) -> f64 {
+        self.constraints
+            .iter()
+            .map(|c| {
+                let v = self
+                    .study
+                    .derived
+                    .iter()
+                    .find(|d| d.name == c.derived)
+                    .and_then(|d| d.value(scene).ok())
+                    .unwrap_or(f64::NAN);
+                c.violation(v)
+            })
+            .sum()
+    }
+
+    /// Σ w (y − t)²/t².
+    fn objective(&self, metrics: &[f64]) -> f64 {
+        self.targets
+            .iter()
+            .zip(metrics)
+            .map(|(t, y)| t.weight * ((y - t.value) / t.value).powi(2))
+            .sum()
+    }
+}
+
+/// One run of a fit.
+#[derive(Clone, Debug, Serialize)]
+pub struct Evaluation {
+    /// Its number in the search (or among the sensitivity runs).
+    pub index: usize,
+    /// The free parameters' values.
+    pub values: Vec<f64>,
+    /// How it ended.
+    pub status: PointStatus,
+    /// The target metrics, then the derived metrics.
+    pub metrics: Vec<f64>,
+    /// The objective (NaN for a failed run).
+    pub objective: f64,
+}
+
+/// The outcome of a fit.
+#[derive(Clone, Debug, Serialize)]
+pub struct FitReport {
+    /// Every run of the search, in order.
+    pub runs: Vec<Evaluation>,
+    /// The run with the smallest objective.
+    pub best: Option<usize>,
+    /// For each free parameter, the sensitivity run and, for each target metric, the
+    /// elasticity (Δy/y)/(Δp/p) between the best point and it.
+    pub sensitivity: Vec<(Evaluation, Vec<f64>)>,
+    /// Why the search ended.
+    pub ended: String,
+}
+
+/// The search's state behind argmin's `&self` cost function.
+struct Search<'a> {
+    fit: &'a Fit,
+    dir: &'a Path,
+    options: &'a StudyOptions,
+    runs: RefCell<Vec<Evaluation>>,
+    /// (bits of the unit coordinates, objective) of every point asked for.
+    seen: RefCell<Vec<(Vec<u64>, f64)>>,
+    failure: RefCell<Option<StudyError>>,
+}
+
+impl Search<'_> {
+    /// Runs (or reads back) the point at `u` as run `index` under `root`.
+    fn evaluate(
+        &self,
+        root: &Path,
+        index: usize,
+        u: &[f64],
+    ) -> Result<Option<Evaluation>, StudyError> {
+        let point = self.fit.point(index, u);
+        let scene = stored_scene(&self.fit.study, &point)?;
+        let pdir = point_dir(root, index);
+        check_stored_scene(&pdir, &scene, &point).map_err(|_| {
+            StudyError::bad(format!(
+                "{}: run {index} of this directory was made for another point than the search asks for now (the fit file or its scene changed): use a new directory",
+                pdir.display()
+            ))
+        })?;
+        let done = read_record(&pdir)?.is_some_and(|r| r.status != PointStatus::Pending);
+        if !done
+            && let Outcome::Stopped =
+                run_point(&self.fit.study, root, &point, &scene, self.options)?
+        {
+            return Ok(None);
+        }
+        let record = read_record(&pdir)?;
+        let status = record.map_or(PointStatus::Pending, |r| r.status);
+        let mut metrics = vec![f64::NAN; self.fit.targets.len()];
+        if status == PointStatus::Done {
+            let path = pdir.join("run").join("summary.json");
+            let text = std::fs::read_to_string(&path).map_err(|e| StudyError::io(&path, e))?;
+            let summary: serde_json::Value = serde_json::from_str(&text)
+                .map_err(|e| StudyError::failed(format!("{}: {e}", path.display())))?;
+            for (slot, t) in metrics.iter_mut().zip(&self.fit.targets) {
+                *slot = metric::read(&summary, &t.metric).unwrap_or(f64::NAN);
+            }
+        }
+        let objective = self.fit.objective(&metrics);
+        metrics.extend(self.fit.study.derived_values(&point));
+        Ok(Some(Evaluation {
+            index,
+            values: point
+                .settings
+                .iter()
+                .map(|(_, v)| v.as_float().unwrap_or(f64::NAN))
+                .collect(),
+            status,
+            metrics,
+            objective,
+        }))
+    }
+
+    fn cost(&self, u: &[f64]) -> Result<f64, String> {
+        let key: Vec<u64> = u.iter().map(|x| x.to_bits()).collect();
+        if let Some((_, c)) = self.seen.borrow().iter().find(|(k, _)| *k == key) {
+            return Ok(*c);
+        }
+        // Outside the bounds or the constraints: not run.
+        let outside: f64 = u.iter().map(|&x| (-x).max(0.0) + (x - 1.0).max(0.0)).sum();
+        let mut penalty = if outside > 0.0 {
+            PENALTY * (1.0 + outside)
+        } else {
+            0.0
+        };
+        if penalty == 0.0 && !self.fit.constraints.is_empty() {
+            let point = self.fit.point(0, u);
+            let violation = self
+                .fit
+                .study
+                .point_scene(&point)
+                .ok()
+                .and_then(|t| Scene::from_toml_str(&t, &self.fit.study.scene_origin).ok())
+                .map_or(1.0, |s| self.fit.violation(&s));
+            if violation > 0.0 {
+                penalty = PENALTY * (1.0 + violation);
+            }
+        }
+        let cost = if penalty > 0.0 {
+            penalty
+        } else {
+            let index = self.runs.borrow().len();
+            if index >= self.fit.budget {
+                return Err("budget".into());
+            }
+            let e = match self.evaluate(self.dir, index, u) {
+                Ok(Some(e)) => e,
+                Ok(None) => return Err("stopped".into()),
+                Err(e) => {
+                    self.failure.borrow_mut().replace(e);
+                    return Err("failure".into());
+                }
+            };
+            // A failed run: far worse than any run, but below the penalties.
+            let c = if e.objective.is_finite() {
+                e.objective
+            } else {
+                PENALTY / 2.0
+            };
+            if !self.options.quiet {
+                let best = self
+                    .runs
+                    .borrow()
+                    .iter()
+                    .map(|r| r.objective)
+                    .chain([e.objective])
+                    .filter(|x| x.is_finite())
+                    .fold(f64::INFINITY, f64::min);
+                eprintln!(
+                    "fit: run {index} of at most {} ({}): {}, objective {:.4e} (best {best:.4e})",
+                    self.fit.budget,
+                    crate::study::study::describe(&self.fit.point(index, u)),
+                    format!("{:?}", e.status).to_lowercase(),
+                    e.objective
+                );
+            }
+            self.runs.borrow_mut().push(e);
+            c
+        };
+        self.seen.borrow_mut().push((key, cost));
+        Ok(cost)
+    }
+}
+
+struct Problem<'a, 'b>(&'b Search<'a>);
+
+impl argmin::core::CostFunction for Problem<'_, '_> {
+    type Param = Vec<f64>;
+    type Output = f64;
+    fn cost(&self, u: &Vec<f64>) -> Result<f64, argmin::core::Error> {
+        self.0.cost(u).map_err(argmin::core::Error::msg)
+    }
+}
+
+/// Runs the fit into `dir` (created if needed), writes `fit.csv`, `fit.json` and
+/// `fit.md`, and returns the report. `options.jobs` is not used (the search is
+/// sequential); `options.stop` stops it at a checkpoint, which the next call resumes.
+pub fn run_fit(fit: &Fit, dir: &Path, options: &StudyOptions) -> Result<FitReport, StudyError> {
+    let search_dir = dir.join("search");
+    std::fs::create_dir_all(&search_dir).map_err(|e| StudyError::io(&search_dir, e))?;
+    let search = Search {
+        fit,
+        dir: &search_dir,
+        options,
+        runs: RefCell::new(Vec::new()),
+        seen: RefCell::new(Vec::new()),
+        failure: RefCell::new(None),
+    };
+    // The starting simplex: the start and a step of a fifth of the range along each
+    // axis (inward from a bound).
+    let start = fit.start();
+    let mut simplex = vec![start.clone()];
+    for k in 0..start.len() {
+        let mut v = start.clone();
+        v[k] = if v[k] + 0.2 <= 1.0 {
+            v[k] + 0.2
+        } else {
+            v[k] - 0.2
+        };
+        simplex.push(v);
+    }
+    let solver = argmin::solver::neldermead::NelderMead::new(simplex)
+        // The spread of the simplex's objectives (squared relative errors) below which the
+        // search ends: about 1e-4 in the relative errors. The budget usually ends it first.
+        .with_sd_tolerance(1e-8)
+        .map_err(|e| StudyError::failed(e.to_string()))?;
+    let result = argmin::core::Executor::new(Problem(&search), solver)
+        .configure(|s| s.max_iters(10 * fit.budget as u64))
+        .run();
+    if let Some(e) = search.failure.borrow_mut().take() {
+        return Err(e);
+    }
+    let stopped = options.stop.requested();
+    let ended = match &result {
+        _ if stopped => "stopped on request; the same command continues it".to_owned(),
+        Ok(r) => format!("the search converged ({:?})", r.state().termination_status),
+        Err(e) if e.to_string() == "budget" => {
+            format!("the budget of {} runs was spent", fit.budget)
+        }
+        Err(e) => format!("the search stopped: {e}"),
+    };
+    let runs = search.runs.take();
+    let best = runs
+        .iter()
+        .filter(|e| e.status == PointStatus::Done && e.objective.is_finite())
+        .min_by(|a, b| a.objective.total_cmp(&b.objective))
+        .map(|e| e.index);
+    let mut sensitivity = Vec::new();
+    if let (Some(b), false) = (best, stopped) {
+        // Per best run, so that a search continued with a larger budget, whose best
+        // point may move, does not meet the steps of another point.
+        let root = dir.join("sensitivity").join(format!("run-{b:04}"));
+        let u_best: Vec<f64> = fit
+            .free
+            .iter()
+            .zip(&runs[b].values)
+            .map(|(f, &v)| f.unit(v))
+            .collect();
+        for k in 0..fit.free.len() {
+            let mut u = u_best.clone();
+            u[k] += if u[k] + SENSITIVITY_STEP <= 1.0 {
+                SENSITIVITY_STEP
+            } else {
+                -SENSITIVITY_STEP
+            };
+            let Some(e) = search.evaluate(&root, k, &u)? else {
+                break;
+            };
+            let dp = (e.values[k] - runs[b].values[k]) / runs[b].values[k];
+            let elasticity = (0..fit.targets.len())
+                .map(|m| ((e.metrics[m] - runs[b].metrics[m]) / runs[b].metrics[m]) / dp)
+                .collect();
+            sensitivity.push((e, elasticity));
+        }
+    }
+    let report = FitReport {
+        runs,
+        best,
+        sensitivity,
+        ended,
+    };
+    write_report(fit, &report, dir)?;
+    Ok(report)
+}
+
+fn write_report(fit: &Fit, report: &FitReport, dir: &Path) -> Result<(), StudyError> {
+    let columns = fit.study.columns();
+    let mut csv = String::new();
+    let mut header: Vec<String> = vec!["run".into()];
+    header.extend(fit.free.iter().map(|f| f.path.clone()));
+    header.push("status".into());
+    header.extend(columns.iter().cloned());
+    header.push("objective".into());
+    let _ = writeln!(csv, "{}", header.join(","));
+    let exact = |x: f64| {
+        if x.is_nan() {
+            String::new()
+        } else {
+            format!("{x:?}")
+        }
+    };
+    for e in &report.runs {
+        let mut f = vec![e.index.to_string()];
+        f.extend(e.values.iter().map(|v| exact(*v)));
+        f.push(format!("{:?}", e.status).to_lowercase());
+        f.extend(e.metrics.iter().map(|v| exact(*v)));
+        f.push(exact(e.objective));
+        let _ = writeln!(csv, "{}", f.join(","));
+    }
+    let mut md = String::new();
+    if !fit.study.description.is_empty() {
+        let _ = writeln!(md, "{}\n", fit.study.description);
+    }
+    let _ = writeln!(md, "{} runs; {}.\n", report.runs.len(), report.ended);
+    if let Some(b) = report.best {
+        let e = &report.runs[b];
+        let _ = writeln!(md, "Best: run {b}, objective {:.4e}.\n", e.objective);
+        let _ = writeln!(md, "| parameter | value | bounds |\n|---|---|---|");
+        for (f, v) in fit.free.iter().zip(&e.values) {
+            let _ = writeln!(
+                md,
+                "| `{}` | {v:.4e} | {:e} – {:e} ({:?}) |",
+                f.path, f.min, f.max, f.scale
+            );
+        }
+        let _ = writeln!(
+            md,
+            "\n| metric | value | target | error | weight |\n|---|---|---|---|---|"
+        );
+        for (t, y) in fit.targets.iter().zip(&e.metrics) {
+            let _ = writeln!(
+                md,
+                "| `{}` | {y:.4e} | {:.4e} | {:+.1} % | {} |",
+                t.metric,
+                t.value,
+                100.0 * (y - t.value) / t.value,
+                t.weight
+            );
+        }
+        for (d, v) in fit
+            .study
+            .derived
+            .iter()
+            .zip(&e.metrics[fit.targets.len()..])
+        {
+            let _ = writeln!(md, "| `{}` (derived) | {v:.4e} | | | |", d.name);
+        }
+        if !report.sensitivity.is_empty() {
+            let _ = write!(
+                md,
+                "\nLocal sensitivity (Δy/y)/(Δp/p), one run a step of {SENSITIVITY_STEP} of the scaled range from the best point:\n\n| parameter |"
+            );
+            for t in &fit.targets {
+                let _ = write!(md, " `{}` |", t.metric);
+            }
+            let _ = writeln!(md, "\n|---|{}", "---|".repeat(fit.targets.len()));
+            for (f, (_, el)) in fit.free.iter().zip(&report.sensitivity) {
+                let cells: Vec<String> = el.iter().map(|x| format!("{x:+.3}")).collect();
+                let _ = writeln!(md, "| `{}` | {} |", f.path, cells.join(" | "));
+            }
+        }
+    }
+    let json =
+        serde_json::to_string_pretty(report).map_err(|e| StudyError::failed(e.to_string()))?;
+    for (name, text) in [("fit.csv", csv), ("fit.md", md), ("fit.json", json + "\n")] {
+        let path = dir.join(name);
+        std::fs::write(&path, text).map_err(|e| StudyError::io(&path, e))?;
+    }
+    Ok(())
+}

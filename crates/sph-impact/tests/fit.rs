@@ -1,0 +1,165 @@
+//! `sph-impact fit`: the inverse search finds a parameter that a metric determines, keeps
+//! every run inside the constraints, and resumes to the same search.
+
+use sph_impact::study::{Fit, PointStatus, Study, StudyOptions, run_fit, run_study};
+use std::path::{Path, PathBuf};
+
+fn scenes() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/scenes")
+}
+
+fn fresh(name: &str) -> PathBuf {
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join(name);
+    let _ = std::fs::remove_dir_all(&dir);
+    dir
+}
+
+fn quiet() -> StudyOptions {
+    StudyOptions {
+        quiet: true,
+        ..StudyOptions::default()
+    }
+}
+
+/// The initial kinetic energy of the RZ smoke scene with the projectile at `speed`.
+fn kinetic_at(speed: f64) -> f64 {
+    let text = format!(
+        "scene = \"smoke_rz.toml\"\nend_time = 1e-8\nmetrics = [\"initial.kinetic\"]\n\
+         [[parameter]]\npath = \"body.projectile.velocity[2]\"\nvalues = [{speed:?}]\n"
+    );
+    let s = Study::from_toml_str(&text, "ke.toml", &scenes()).unwrap();
+    let t = run_study(&s, &fresh("fit_reference"), &quiet()).unwrap();
+    t.rows[0].metrics[0]
+}
+
+/// The fit's file: the projectile's speed and the target's Weibull k free, the initial
+/// kinetic energy of −3500 m/s as the target, the Brazilian disc's static strength held
+/// within ±11 % of 9.8 MPa.
+fn fit_text(target: f64, budget: usize) -> String {
+    format!(
+        r#"
+description = "test fit"
+scene = "smoke_rz.toml"
+end_time = 1e-8
+budget = {budget}
+
+[[free]]
+path = "body.projectile.velocity[2]"
+min = -4500.0
+max = -3000.0
+start = -4200.0
+
+[[free]]
+path = "body.target.material.damage.k"
+min = 1e38
+max = 1e44
+scale = "log"
+start = 2.7e41
+
+[[target]]
+metric = "initial.kinetic"
+value = {target:e}
+
+[[derived]]
+name = "sigma_b_disc"
+static_strength = {{ body = "target", volume = 9.817e-5 }}
+
+[[constraint]]
+derived = "sigma_b_disc"
+min = 8.722e6
+max = 10.878e6
+"#
+    )
+}
+
+#[test]
+fn a_fit_finds_the_speed_inside_the_constraint_and_resumes_to_the_same_search() {
+    let target = kinetic_at(-3500.0);
+    let fit = Fit::from_toml_str(&fit_text(target, 24), "fit.toml", &scenes()).unwrap();
+    let dir = fresh("fit_whole");
+    let report = run_fit(&fit, &dir, &quiet()).unwrap();
+    assert!(report.runs.len() <= 24, "{}", report.runs.len());
+    let best = &report.runs[report.best.unwrap()];
+    assert_eq!(best.status, PointStatus::Done);
+    assert!(
+        (best.values[0] / -3500.0 - 1.0).abs() < 0.003,
+        "{:?} after {} runs",
+        best.values,
+        report.runs.len()
+    );
+    assert!(best.objective < 1e-3, "{}", best.objective);
+    // No run outside the constraint: a point against it is not run at all.
+    for e in &report.runs {
+        let sb = e.metrics[1];
+        assert!(
+            (8.722e6..=10.878e6).contains(&sb),
+            "run {}: σ_b {sb}",
+            e.index
+        );
+    }
+    // One sensitivity run per free parameter: the kinetic energy goes as v², so its
+    // elasticity to the speed is about 2, and k does not change it.
+    assert_eq!(report.sensitivity.len(), 2);
+    assert!(
+        (report.sensitivity[0].1[0] - 2.0).abs() < 0.1,
+        "{:?}",
+        report.sensitivity
+    );
+    assert!(
+        report.sensitivity[1].1[0].abs() < 1e-9,
+        "{:?}",
+        report.sensitivity
+    );
+    let md = std::fs::read_to_string(dir.join("fit.md")).unwrap();
+    assert!(md.contains("Best: run"), "{md}");
+
+    // The same search cut short by a smaller budget, then continued with the full one,
+    // makes the same runs.
+    let pieces = fresh("fit_pieces");
+    let short = Fit::from_toml_str(&fit_text(target, 5), "fit.toml", &scenes()).unwrap();
+    let r = run_fit(&short, &pieces, &quiet()).unwrap();
+    assert_eq!(r.runs.len(), 5);
+    assert!(r.ended.contains("budget"), "{}", r.ended);
+    run_fit(&fit, &pieces, &quiet()).unwrap();
+    assert_eq!(
+        std::fs::read_to_string(pieces.join("fit.csv")).unwrap(),
+        std::fs::read_to_string(dir.join("fit.csv")).unwrap()
+    );
+}
+
+#[test]
+fn bad_fit_files_name_the_key() {
+    let good = fit_text(1.0, 10);
+    let cases = [
+        (
+            good.replace("min = -4500.0", "min = -2000.0"),
+            "`free[0].max`: the bounds are empty or reversed",
+        ),
+        (
+            good.replace("start = -4200.0", "start = -5000.0"),
+            "`free[0].start`: -5000 is outside the bounds",
+        ),
+        (
+            good.replace("derived = \"sigma_b_disc\"", "derived = \"sigma\""),
+            "`constraint[0].derived`: `sigma` is not one of the `[[derived]]` metrics",
+        ),
+        (
+            good.replace("max = 10.878e6", "max = 9.0e6"),
+            "the start point (body.projectile.velocity[2] = -4200.0, body.target.material.damage.k = 2.7e41) violates the constraints",
+        ),
+        (
+            good.replace("budget = 10", "budget = 2"),
+            "`budget`: must allow at least the starting simplex, 3 runs",
+        ),
+        (
+            good.replace("metric = \"initial.kinetic\"", "metric = \"kinetic\""),
+            "`metrics[0]`: `kinetic` is not a key of summary.json",
+        ),
+    ];
+    for (text, expected) in cases {
+        let e = Fit::from_toml_str(&text, "fit.toml", &scenes()).unwrap_err();
+        let line = e.to_string();
+        assert!(line.starts_with("fit.toml:"), "{line}");
+        assert!(line.contains(expected), "{line}\n expected: {expected}");
+    }
+}
