@@ -215,9 +215,8 @@ fn main() -> ExitCode {
             };
             // SIGINT/SIGTERM finish the step, write a checkpoint and a partial summary,
             // and exit with 130.
-            if let Err(e) = options.stop.on_signals() {
-                eprintln!("error: cannot catch SIGINT/SIGTERM: {e}");
-                return ExitCode::from(CommandError::FAILED);
+            if let Err(code) = catch_signals(&options.stop) {
+                return code;
             }
             sph_impact::cli::run_scene(&scene, out.as_deref(), &options).map(|_| ())
         }
@@ -255,9 +254,8 @@ fn main() -> ExitCode {
                 quiet,
                 stop: StopFlag::new(),
             };
-            if let Err(e) = options.stop.on_signals() {
-                eprintln!("error: cannot catch SIGINT/SIGTERM: {e}");
-                return ExitCode::from(CommandError::FAILED);
+            if let Err(code) = catch_signals(&options.stop) {
+                return code;
             }
             sph_impact::cli::study(&study, out.as_deref(), &options).map(|_| ())
         }
@@ -266,9 +264,8 @@ fn main() -> ExitCode {
                 quiet,
                 ..Default::default()
             };
-            if let Err(e) = options.stop.on_signals() {
-                eprintln!("error: cannot catch SIGINT/SIGTERM: {e}");
-                return ExitCode::from(CommandError::FAILED);
+            if let Err(code) = catch_signals(&options.stop) {
+                return code;
             }
             sph_impact::cli::fit(&fit, out.as_deref(), &options).map(|_| ())
         }
@@ -297,6 +294,15 @@ fn main() -> ExitCode {
         ),
     };
     finish(result)
+}
+
+/// SIGINT and SIGTERM raise `stop` (the run, or each point of a study or fit, ends at a
+/// checkpoint); the exit code to return when they cannot be caught.
+fn catch_signals(stop: &StopFlag) -> Result<(), ExitCode> {
+    stop.on_signals().map_err(|e| {
+        eprintln!("error: cannot catch SIGINT/SIGTERM: {e}");
+        ExitCode::from(CommandError::FAILED)
+    })
 }
 
 /// The exit code of a command's result, with its error printed.

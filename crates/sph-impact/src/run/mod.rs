@@ -18,7 +18,7 @@
 //! 2π × (mass per radian), so every total in the outputs is the whole body's.
 
 mod arrays;
-mod atomic;
+pub(crate) mod atomic;
 mod checkpoint;
 mod directory;
 mod drive;

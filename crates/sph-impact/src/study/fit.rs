@@ -423,13 +423,7 @@ impl Search<'_> {
         let status = record.map_or(PointStatus::Pending, |r| r.status);
         let mut metrics = vec![f64::NAN; self.fit.targets.len()];
         if status == PointStatus::Done {
-            let path = pdir.join("run").join("summary.json");
-            let text = std::fs::read_to_string(&path).map_err(|e| StudyError::io(&path, e))?;
-            let summary: serde_json::Value = serde_json::from_str(&text)
-                .map_err(|e| StudyError::failed(format!("{}: {e}", path.display())))?;
-            for (slot, t) in metrics.iter_mut().zip(&self.fit.targets) {
-                *slot = metric::read(&summary, &t.metric).unwrap_or(f64::NAN);
-            }
+            metrics = metric::read_point(&pdir, self.fit.targets.iter().map(|t| &t.metric))?.0;
         }
         let objective = self.fit.objective(&metrics);
         metrics.extend(self.fit.study.derived_values(&point));
@@ -627,13 +621,7 @@ fn write_report(fit: &Fit, report: &FitReport, dir: &Path) -> Result<(), StudyEr
     header.extend(columns.iter().cloned());
     header.push("objective".into());
     let _ = writeln!(csv, "{}", header.join(","));
-    let exact = |x: f64| {
-        if x.is_nan() {
-            String::new()
-        } else {
-            format!("{x:?}")
-        }
-    };
+    let exact = crate::study::table::exact;
     for e in &report.runs {
         let mut f = vec![e.index.to_string()];
         f.extend(e.values.iter().map(|v| exact(*v)));
@@ -699,7 +687,7 @@ fn write_report(fit: &Fit, report: &FitReport, dir: &Path) -> Result<(), StudyEr
         serde_json::to_string_pretty(report).map_err(|e| StudyError::failed(e.to_string()))?;
     for (name, text) in [("fit.csv", csv), ("fit.md", md), ("fit.json", json + "\n")] {
         let path = dir.join(name);
-        std::fs::write(&path, text).map_err(|e| StudyError::io(&path, e))?;
+        crate::study::runner::write_whole(&path, text.as_bytes())?;
     }
     Ok(())
 }

@@ -108,6 +108,30 @@ pub fn read(summary: &Value, metric: &str) -> Result<f64, String> {
     }
 }
 
+/// The `metrics` of a finished point (its `run/summary.json` under `point_dir`), NaN
+/// where one cannot be read, with the first reason one could not.
+pub(crate) fn read_point(
+    point_dir: &std::path::Path,
+    metrics: impl IntoIterator<Item = impl AsRef<str>>,
+) -> Result<(Vec<f64>, Option<String>), crate::study::StudyError> {
+    use crate::study::StudyError;
+    let path = point_dir.join("run").join("summary.json");
+    let text = std::fs::read_to_string(&path).map_err(|e| StudyError::io(&path, e))?;
+    let summary: Value = serde_json::from_str(&text)
+        .map_err(|e| StudyError::failed(format!("{}: {e}", path.display())))?;
+    let mut error = None;
+    let values = metrics
+        .into_iter()
+        .map(|m| {
+            read(&summary, m.as_ref()).unwrap_or_else(|e| {
+                error.get_or_insert(e);
+                f64::NAN
+            })
+        })
+        .collect();
+    Ok((values, error))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -21,7 +21,6 @@ use crate::study::error::StudyError;
 use crate::study::study::{Study, describe};
 use crate::study::table::{PointStatus, StudyTable};
 use serde::{Deserialize, Serialize};
-use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::sync::Mutex;
 use std::sync::atomic::{AtomicUsize, Ordering};
@@ -282,14 +281,10 @@ pub(crate) fn check_stored_scene(
     }
 }
 
-/// Writes `path` whole: via `NAME.part` and a rename, so a killed study leaves the old
-/// file or none.
+/// Writes `path` whole, through the run's atomic writer (`NAME.part` and a rename), so a
+/// killed study leaves the old file or none.
 pub(crate) fn write_whole(path: &Path, bytes: &[u8]) -> Result<(), StudyError> {
-    let part = path.with_extension("part");
-    std::fs::File::create(&part)
-        .and_then(|mut f| f.write_all(bytes).and_then(|()| f.flush()))
-        .and_then(|()| std::fs::rename(&part, path))
-        .map_err(|e| StudyError::io(path, e))
+    crate::run::atomic::write_bytes(path, bytes).map_err(|e| StudyError::failed(e.to_string()))
 }
 
 /// Progress lines on standard error: each point as it starts and ends, with the count

@@ -85,17 +85,10 @@ impl StudyTable {
             let mut error = record.as_ref().and_then(|r| r.error.clone());
             let mut metrics = vec![f64::NAN; study.metrics.len()];
             if status == PointStatus::Done {
-                let path = pdir.join("run").join("summary.json");
-                let text = std::fs::read_to_string(&path).map_err(|e| StudyError::io(&path, e))?;
-                let summary: serde_json::Value = serde_json::from_str(&text)
-                    .map_err(|e| StudyError::failed(format!("{}: {e}", path.display())))?;
-                for (slot, m) in metrics.iter_mut().zip(&study.metrics) {
-                    match metric::read(&summary, m) {
-                        Ok(v) => *slot = v,
-                        Err(e) => {
-                            error.get_or_insert(e);
-                        }
-                    }
+                let (values, e) = metric::read_point(&pdir, &study.metrics)?;
+                metrics = values;
+                if let Some(e) = e {
+                    error.get_or_insert(e);
                 }
             }
             metrics.extend(study.derived_values(&point));
@@ -237,7 +230,7 @@ impl StudyTable {
             ("study.md", self.to_markdown()),
         ] {
             let path = dir.join(name);
-            std::fs::write(&path, text).map_err(|e| StudyError::io(&path, e))?;
+            crate::study::runner::write_whole(&path, text.as_bytes())?;
         }
         Ok(())
     }
@@ -263,7 +256,7 @@ pub(crate) fn json_cell(v: &serde_json::Value) -> String {
 }
 
 /// Shortest exact form (`2.7e41`, `0.0552`); NaN as empty.
-fn exact(x: f64) -> String {
+pub(crate) fn exact(x: f64) -> String {
     if x.is_nan() {
         String::new()
     } else {
