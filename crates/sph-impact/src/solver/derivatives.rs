@@ -12,10 +12,13 @@
 //!   stress), symmetric in i, j, so the pair forces cancel exactly,
 //! * de_i/dt by the chosen [`EnergyForm`].
 //!
-//! Each particle's sums depend only on its own sorted neighbour row, so results are
-//! identical for any number of threads.
+//! Both passes evaluate a pair of two particles of one block of rows once, for both
+//! (pair_blocks.rs); the blocks are fixed by the particle count and each particle's sums
+//! are added in an order fixed by the sorted rows, so results are identical for any
+//! number of threads.
 
 use crate::solver::config::{DensityForm, EnergyForm, MomentumForm, SchemeConfig};
+use crate::solver::pair_blocks;
 use crate::solver::pair_kernel::PairKernel;
 use crate::solver::state::Extended;
 use rayon::prelude::*;
@@ -108,6 +111,60 @@ impl<D: Dimension> PairPart<D> {
     }
 }
 
+/// What a row of pass 2 reads of its own particle once, for all its pairs.
+struct Row<D: Dimension> {
+    x: D::Vector,
+    v: D::Vector,
+    r: f64,
+    rho: f64,
+    p: f64,
+    c: f64,
+    material: u16,
+    s_undamaged: D::Tensor,
+    d: f64,
+    eta: f64,
+}
+
+/// One side's view of an evaluated pair (pass 2): its index, ∇W̄ from its side, its
+/// dv/dt and the artificial-stress part of it, its velocity and that less the partner's,
+/// both weights r, its pressure and coupled deviatoric stress, both densities η and the
+/// partner's mass.
+struct Share<D: Dimension> {
+    index: usize,
+    g: D::Vector,
+    force: D::Vector,
+    a_force: D::Vector,
+    v: D::Vector,
+    vrel: D::Vector,
+    r: f64,
+    r_partner: f64,
+    p: f64,
+    s: D::Tensor,
+    eta: f64,
+    eta_partner: f64,
+    m_partner: f64,
+}
+
+/// An evaluated pair (pass 2): its approach speed −v_ij·r̂, and unless it does not
+/// interact, its shares for i and j (j's is zero unless asked for), whether j is a
+/// contact wall's ghost, and r̂.
+struct PairEval<D: Dimension> {
+    approach: f64,
+    parts: Option<(PairPart<D>, PairPart<D>)>,
+    contact: bool,
+    r_hat: D::Vector,
+}
+
+impl<D: Dimension> PairEval<D> {
+    /// A pair that does not interact and does not approach.
+    const QUIET: Self = PairEval {
+        approach: 0.0,
+        parts: None,
+        contact: false,
+        r_hat: D::Vector::ZERO,
+    };
+}
+
 /// The result of pass 2: the rates of every real particle, and what only some particles
 /// or geometries have, kept apart so that a 3-D run does not hold them per particle.
 #[derive(Clone, Debug)]
@@ -123,9 +180,6 @@ pub(crate) struct PairRates<D: Dimension> {
     /// axis (axisymmetric.rs).
     pub hoop_gauge: Vec<f64>,
 }
-
-/// Rows per parallel task of pass 2.
-const ROWS_PER_TASK: usize = 256;
 
 /// Whether the extended state is an RZ one (it carries each particle's radius). The gather
 /// loops are dispatched on it once per call, so that each geometry runs its own
@@ -241,14 +295,55 @@ impl GradientOptions {
     }
 }
 
+/// Pass 1's sums of one particle: Σ V_j (v_j − v_i) ⊗ ∇W̄, Σ V_j (P_j − P_i) ∇W̄, the
+/// moment matrix Σ V_j (x_j − x_i) ⊗ ∇W̄, Σ V_j (e_j − e_i) ∇W̄ and Σ m_j ∂W/∂h.
+struct Sums<D: Dimension> {
+    l: D::Tensor,
+    gp: D::Vector,
+    m: D::Tensor,
+    ge: D::Vector,
+    dwdh: f64,
+}
+
+/// One pair's terms of pass 1 before the partner's volume: (f_j − f_i) ⊗ ∇_i W̄ and
+/// (x_j − x_i) ⊗ ∇_i W̄ are the same seen from i and from j (both factors change sign),
+/// so a pair evaluated once adds them to both sides with the other's volume. `None`:
+/// not summed (a decoupled pair's velocity gradient, energies across materials, M
+/// when unused).
+struct PairGradients<D: Dimension> {
+    l: Option<D::Tensor>,
+    gp: D::Vector,
+    ge: Option<D::Vector>,
+    m: Option<D::Tensor>,
+}
+
+impl<D: Dimension> PairGradients<D> {
+    /// Adds the terms times the partner's volume `vol`, and `dwdh` (m_partner ∂W/∂h).
+    #[inline(always)]
+    fn add_to(&self, s: &mut Sums<D>, vol: f64, dwdh: f64) {
+        if let Some(l) = self.l {
+            s.l += l * vol;
+        }
+        s.gp += self.gp * vol;
+        if let Some(ge) = self.ge {
+            s.ge += ge * vol;
+        }
+        if let Some(m) = self.m {
+            s.m += m * vol;
+        }
+        s.dwdh += dwdh;
+    }
+}
+
 /// Pass 1.
 pub(crate) fn gradients<D: Dimension, P: PairKernel<D>>(
     ext: &Extended<'_, D>,
     list: &NeighborList,
     pk: &P,
     options: GradientOptions,
+    rows: usize,
 ) -> GradientSet<D> {
-    per_geometry!(gradients_in(ext, list, pk, options))
+    per_geometry!(gradients_in(ext, list, pk, options, rows))
 }
 
 /// [`gradients`] for one geometry (`RZ`), fixed at compile time.
@@ -257,6 +352,7 @@ fn gradients_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
     list: &NeighborList,
     pk: &P,
     options: GradientOptions,
+    rows: usize,
 ) -> GradientSet<D> {
     let GradientOptions {
         correct,
@@ -274,43 +370,48 @@ fn gradients_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
             ext.density[k]
         }
     };
-    let per_particle = (0..ext.n_real).into_par_iter().map(|i| {
-        let (xi, vi, pi) = (ext.position[i], ext.velocity[i], ext.pressure[i]);
-        let mut l = D::Tensor::ZERO;
-        let mut gp = D::Vector::ZERO;
-        let mut m = D::Tensor::ZERO;
-        let mut ge = D::Vector::ZERO;
-        let energy = !ext.specific_energy.is_empty();
-        let d = D::DIM as f64;
-        let hi = pk.h(i);
-        // Self term of Σ m ∂W/∂h: ∂W(0,h)/∂h = −d W(0,h)/h.
-        let mut dwdh = -d * ext.mass[i] * pk.w(i, i, D::Vector::ZERO) / hi;
-        for j in list.neighbors(i) {
-            let j = j as usize;
-            let dx = ext.position[j] - xi;
-            let dist = dx.norm();
-            let g = pk.grad_at(i, j, -dx, dist);
-            let vol = ext.mass[j] / eta(j);
-            // A decoupled pair (fractured rock separating) shares no velocity gradient;
-            // it still counts in M and ∇P, as in Spheral's FSISPH.
-            if !decoupled(ext, i, j, -dx, vi - ext.velocity[j]) {
-                l += D::Tensor::outer(ext.velocity[j] - vi, g) * vol;
+    let energy = !ext.specific_energy.is_empty();
+    let d = D::DIM as f64;
+    // The pair (i, j) with dx = x_j − x_i, added to i's sums and, for a pair inside the
+    // block (`to_j`), to j's: every term is (f_j − f_i) ⊗ ∇_i W̄ or dx ⊗ ∇_i W̄ times the
+    // partner's volume, the same product for both sides (both factors change sign).
+    let add_pair = |i: usize, j: usize, sums_i: &mut Sums<D>, to_j: Option<&mut Sums<D>>| {
+        let xi = ext.position[i];
+        let dx = ext.position[j] - xi;
+        let dist = dx.norm();
+        // ∇_i W̄ and, for the grad-h factor, each side's own ∂W/∂h times the partner's
+        // mass (j's only when the pair is evaluated for both).
+        let (g, dwdh_i, dwdh_j) = match (grad_h, to_j.is_some()) {
+            (true, true) => {
+                let (g, wi, wj) = pk.grad_and_dw_dh(i, j, -dx, dist);
+                (g, ext.mass[j] * wi, ext.mass[i] * wj)
             }
-            gp += g * ((ext.pressure[j] - pi) * vol);
-            if energy && ext.material[i] == ext.material[j] {
-                ge += g * ((ext.specific_energy[j] - ext.specific_energy[i]) * vol);
-            }
-            // M and the grad-h sum only where they are used (two of the loop's costliest
-            // terms: an outer product, and a kernel and its derivative).
-            if moments {
-                m += D::Tensor::outer(dx, g) * vol;
-            }
-            if grad_h {
-                dwdh += ext.mass[j] * pk.dw_dh_own_at(i, dx, dist);
-            }
+            (true, false) => (
+                pk.grad_at(i, j, -dx, dist),
+                ext.mass[j] * pk.dw_dh_own_at(i, dx, dist),
+                0.0,
+            ),
+            (false, _) => (pk.grad_at(i, j, -dx, dist), 0.0, 0.0),
+        };
+        let dv = ext.velocity[j] - ext.velocity[i];
+        // A decoupled pair (fractured rock separating) shares no velocity gradient;
+        // it still counts in M and ∇P, as in Spheral's FSISPH.
+        let terms = PairGradients {
+            l: (!decoupled(ext, i, j, -dx, -dv)).then(|| D::Tensor::outer(dv, g)),
+            gp: g * (ext.pressure[j] - ext.pressure[i]),
+            ge: (energy && ext.material[i] == ext.material[j])
+                .then(|| g * (ext.specific_energy[j] - ext.specific_energy[i])),
+            // M only where it is used (an outer product per pair).
+            m: moments.then(|| D::Tensor::outer(dx, g)),
+        };
+        terms.add_to(sums_i, ext.mass[j] / eta(j), dwdh_i);
+        if let Some(sums_j) = to_j {
+            terms.add_to(sums_j, ext.mass[i] / eta(i), dwdh_j);
         }
+    };
+    let finish = |i: usize, s: &Sums<D>| -> (Gradients<D>, D::Tensor) {
         let omega = if grad_h {
-            1.0 + hi / (d * eta(i)) * dwdh
+            1.0 + pk.h(i) / (d * eta(i)) * s.dwdh
         } else {
             1.0
         };
@@ -319,10 +420,11 @@ fn gradients_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
         // M⁻¹ when either use wants it: the continuity equation and reconstruction
         // (`correct`), and the strain rate that drives the deviatoric stress.
         let inv = if moments {
-            well_conditioned_inverse(&m)
+            well_conditioned_inverse(&s.m)
         } else {
             None
         };
+        let l = s.l;
         let strain_velocity = match (correct_strain, inv) {
             (true, Some(mi)) => l.mul_tensor(&mi),
             _ => l,
@@ -332,34 +434,89 @@ fn gradients_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
             (true, Some(mi)) => (
                 Gradients {
                     velocity: l.mul_tensor(&mi),
-                    pressure: mi.transpose().mul_vec(gp),
+                    pressure: mi.transpose().mul_vec(s.gp),
                     omega,
                     strain_velocity,
-                    energy: mi.transpose().mul_vec(ge),
+                    energy: mi.transpose().mul_vec(s.ge),
                 },
                 c,
             ),
             _ => (
                 Gradients {
                     velocity: l,
-                    pressure: gp,
+                    pressure: s.gp,
                     omega,
                     strain_velocity,
-                    energy: ge,
+                    energy: s.ge,
                 },
                 c,
             ),
         }
-    });
-    if correct || keep_correction {
-        let (each, correction) = per_particle.unzip();
-        GradientSet { each, correction }
-    } else {
-        GradientSet {
-            each: per_particle.map(|(g, _)| g).collect(),
-            correction: Vec::new(),
+    };
+    // Each block of rows sums its pairs (pair_blocks.rs), then finishes its rows.
+    let n = ext.n_real;
+    let keep = correct || keep_correction;
+    let fill = |b: usize, out: &mut [Gradients<D>], mut corr: Option<&mut [D::Tensor]>| {
+        let (start, end) = (b * rows, b * rows + out.len());
+        let mut sums: Vec<Sums<D>> = (start..end)
+            .map(|i| Sums {
+                l: D::Tensor::ZERO,
+                gp: D::Vector::ZERO,
+                m: D::Tensor::ZERO,
+                ge: D::Vector::ZERO,
+                // Self term of Σ m ∂W/∂h: ∂W(0,h)/∂h = −d W(0,h)/h.
+                dwdh: if grad_h {
+                    -d * ext.mass[i] * pk.w(i, i, D::Vector::ZERO) / pk.h(i)
+                } else {
+                    0.0
+                },
+            })
+            .collect();
+        for i in start..end {
+            for j in list.neighbors(i) {
+                let j = j as usize;
+                match pair_blocks::visit(i, j, start, end) {
+                    pair_blocks::Visit::Done => {}
+                    pair_blocks::Visit::OwnOnly => add_pair(i, j, &mut sums[i - start], None),
+                    pair_blocks::Visit::Both => {
+                        let (lo, hi) = sums.split_at_mut(j - start);
+                        add_pair(i, j, &mut lo[i - start], Some(&mut hi[0]));
+                    }
+                }
+            }
         }
+        for (k, s) in sums.iter().enumerate() {
+            let (g, c) = finish(start + k, s);
+            out[k] = g;
+            if let Some(corr) = corr.as_deref_mut() {
+                corr[k] = c;
+            }
+        }
+    };
+    let unset = Gradients {
+        velocity: D::Tensor::ZERO,
+        pressure: D::Vector::ZERO,
+        omega: 1.0,
+        strain_velocity: D::Tensor::ZERO,
+        energy: D::Vector::ZERO,
+    };
+    let mut each = vec![unset; n];
+    let mut correction = if keep {
+        vec![D::Tensor::IDENTITY; n]
+    } else {
+        Vec::new()
+    };
+    if keep {
+        each.par_chunks_mut(rows)
+            .zip(correction.par_chunks_mut(rows))
+            .enumerate()
+            .for_each(|(b, (out, corr))| fill(b, out, Some(corr)));
+    } else {
+        each.par_chunks_mut(rows)
+            .enumerate()
+            .for_each(|(b, out)| fill(b, out, None));
     }
+    GradientSet { each, correction }
 }
 
 /// Whether the pair (i, j), r = x_i − x_j, v_ij = v_i − v_j, is decoupled as fractured
@@ -432,8 +589,9 @@ pub(crate) fn rates<D: Dimension, P: PairKernel<D>>(
     pk: &P,
     grads: Option<&GradientSet<D>>,
     scheme: &SchemeConfig,
+    rows: usize,
 ) -> PairRates<D> {
-    per_geometry!(rates_in(ext, list, pk, grads, scheme))
+    per_geometry!(rates_in(ext, list, pk, grads, scheme, rows))
 }
 
 /// [`rates`] for one geometry (`RZ`), fixed at compile time.
@@ -443,6 +601,7 @@ fn rates_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
     pk: &P,
     grads: Option<&GradientSet<D>>,
     scheme: &SchemeConfig,
+    rows: usize,
 ) -> PairRates<D> {
     let visc = scheme.viscosity;
     let solid = ext.has_stress();
@@ -456,6 +615,11 @@ fn rates_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
         Some(gr) if scheme.momentum_correction => Some(&gr.correction),
         _ => None,
     };
+    // The continuity equation's corrections, when on.
+    let continuity_corrections = match grads {
+        Some(gr) if scheme.gradient_correction => Some(&gr.correction),
+        _ => None,
+    };
     // RZ: the pair terms carry the weights r (pressure and stress r σ, density η = ρ r;
     // axisymmetric.rs); Cartesian runs have r = 1 throughout.
     let rz = RZ;
@@ -465,358 +629,407 @@ fn rates_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
     // ghost takes its source's, since |∇·v| and |∇×v| do not change under a mirror.
     let switch = viscosity_switch_factors(ext, pk, grads, scheme);
     let switch_of = |k: usize| switch[ext.source[k] as usize];
-    // Particle i's rates, the ghosts' part of its dv/dt, and its hoop gauge (1 outside RZ).
-    let pair_sums = |i: usize| -> (Rates<D>, D::Vector, f64) {
-        let (xi, vi) = (ext.position[i], ext.velocity[i]);
-        let ri = radius(i);
-        let (rhoi, pi, ci, mi_mat) = (
-            ext.density[i],
-            ext.pressure[i],
-            ext.sound_speed[i],
-            ext.material[i],
-        );
+    // RZ: the hoop component R_θθ of particle i's artificial stress, which its hoop
+    // force balances (`finish`).
+    let hoop_astress = |i: usize| {
+        if rz && use_astress {
+            let p = ext.pressure[i];
+            let s_tt = if solid { ext.stress(i).z_axis.z } else { 0.0 };
+            astress.hoop(s_tt - p, p, ext.density[i])
+        } else {
+            0.0
+        }
+    };
+    // What a row reads of its own particle once, for all its pairs.
+    let row = |i: usize| Row::<D> {
+        x: ext.position[i],
+        v: ext.velocity[i],
+        r: radius(i),
+        rho: ext.density[i],
+        p: ext.pressure[i],
+        c: ext.sound_speed[i],
+        material: ext.material[i],
         // Particle i's undamaged deviatoric stress in D dimensions (the in-plane block);
         // each pair weakens it by its damage coupling.
-        let si_undamaged = if solid {
+        s_undamaged: if solid {
             D::project(&ext.undamaged_stress(i))
         } else {
             D::Tensor::ZERO
+        },
+        d: if damaged { ext.damage[i] } else { 0.0 },
+        eta: ext.density[i] * smooth_r(i),
+    };
+    // One side's share of the pair: `g` is ∇W̄ seen from that side, `force` its dv/dt,
+    // `a_force` its artificial-stress part, `vrel` its velocity less the partner's.
+    let share = |side: &Share<D>, v_star: D::Vector, pi_ij: f64, f_astress: f64| {
+        let mut part = PairPart {
+            dv: side.force,
+            ..PairPart::ZERO
         };
-        let di = if damaged { ext.damage[i] } else { 0.0 };
-        let mut out = Rates::ZERO;
-        let mut dv_boundary = D::Vector::ZERO;
-        let mut hoop_gauge = 1.0;
-        let etai = rhoi * smooth_r(i);
-        // RZ: the hoop component R_θθ of particle i's artificial stress, and the sum that
-        // its hoop force balances (below the loop).
-        let r_tt = if rz && use_astress {
-            let s_tt = if solid { ext.stress(i).z_axis.z } else { 0.0 };
-            astress.hoop(s_tt - pi, pi, rhoi)
-        } else {
-            0.0
+        let g = side.g;
+        if rz {
+            let vx = side.m_partner / side.eta_partner * g.component(0);
+            part.gauge_a = vx;
+            part.gauge_g = vx * side.r_partner;
+            // 1/r_i + 1/r_j = 2/r_j + (r_j − r_i)/(r_i r_j): the first part is the
+            // Cartesian pair term of R/r (zero for a uniform R on a complete
+            // lattice), the second the geometric part the hoop force cancels.
+            part.astress_hoop = side.m_partner * f_astress * (side.r_partner - side.r)
+                / (side.r * side.r_partner)
+                * g.component(0);
+        }
+        // The continuity equation uses the corrected gradient when enabled.
+        let gc = match continuity_corrections {
+            Some(c) => c[side.index].mul_vec(g),
+            None => g,
         };
-        // i's sums over its ordinary partners, and over the ghosts of contact walls.
-        let (mut own, mut wall) = (PairPart::<D>::ZERO, PairPart::<D>::ZERO);
-        let mut wall_normal = D::Vector::ZERO;
-        for j in list.neighbors(i) {
-            let j = j as usize;
-            let r = xi - ext.position[j];
-            let dist = r.norm();
-            if dist == 0.0 {
-                // Coincident particles exert no force (∇W = 0) and define no axis.
-                continue;
+        let dvs = (side.v - v_star).dot(gc);
+        part.drho = match scheme.density {
+            DensityForm::Volume => 2.0 * side.eta * side.m_partner / side.eta_partner * dvs,
+            DensityForm::Mass => 2.0 * side.m_partner * dvs,
+            // Summation density is recomputed from positions each stage.
+            DensityForm::Summation => 0.0,
+        };
+        // Energy: the compatible form pairs with the plain (antisymmetric) gradient
+        // of the momentum equation, which is what makes it exactly conservative.
+        part.de = match scheme.energy {
+            EnergyForm::Compatible => {
+                part.work = side.force.dot(v_star);
+                -side.force.dot(side.v - v_star)
             }
-            let r_hat = r / dist;
-            let g = pk.grad_at(i, j, r, dist);
-            let (vj, rhoj, pj, cj, mj) = (
-                ext.velocity[j],
-                ext.density[j],
-                ext.pressure[j],
-                ext.sound_speed[j],
-                ext.mass[j],
-            );
-            let dj = if damaged { ext.damage[j] } else { 0.0 };
-            let same_material = mi_mat == ext.material[j];
-            let vij = vi - vj;
-            out.approach = out.approach.max(-vij.dot(r_hat));
-            // Fractured rock separating in tension does not interact at all
-            // (sph_damage::decoupling); the test is symmetric, so the pair drops out of
-            // both sides' sums.
-            if decoupled(ext, i, j, r, vij) {
-                continue;
-            }
-
-            // Left (j) and right (i) states along r̂, reconstructed to the midpoint.
-            let (mut ui, mut uj) = (vi.dot(r_hat), vj.dot(r_hat));
-            let (mut pfi, mut pfj) = (pi, pj);
-            // Both sides' velocity gradients, for the limited viscosity, and energy
-            // gradients, for the energy diffusion.
-            let mut l_pair = None;
-            let mut ge_pair = (D::Vector::ZERO, D::Vector::ZERO);
-            if let Some(gr) = grads.map(|g| &g.each) {
-                let gi = &gr[i];
-                let src = &gr[ext.source[j] as usize];
-                // A ghost's gradients are its source's, mapped: M L Mᵀ and M ∇P.
-                let m = &ext.map(j);
-                let (lj, gpj) = if j < ext.n_real {
-                    (src.velocity, src.pressure)
+            EnergyForm::Study => {
+                // −2 m_j/(ρ_iρ_j) (v_i − v*)·(σ_i ∇W) with σ_i = S_i − P_i I, plus
+                // the viscous and artificial-stress heating.
+                let eta2 = side.eta * side.eta_partner;
+                let shear = if solid {
+                    -2.0 * side.m_partner * side.r / eta2 * (side.v - v_star).dot(side.s.mul_vec(g))
                 } else {
-                    (
-                        m.mul_tensor(&src.velocity).mul_tensor(&m.transpose()),
-                        m.mul_vec(src.pressure),
-                    )
+                    0.0
                 };
-                l_pair = Some((gi.velocity, lj));
-                if diffuse {
-                    ge_pair = (
-                        gi.energy,
-                        if j < ext.n_real {
-                            src.energy
-                        } else {
-                            m.mul_vec(src.energy)
-                        },
-                    );
-                }
-                let half = r * 0.5;
-                let dui = r_hat.dot(gi.velocity.mul_vec(-half));
-                let duj = r_hat.dot(lj.mul_vec(half));
-                (ui, uj) = reconstruct(ui, uj, dui, duj, scheme.limiter);
-                (pfi, pfj) = reconstruct(
-                    pi,
-                    pj,
-                    gi.pressure.dot(-half),
-                    gpj.dot(half),
-                    scheme.limiter,
+                shear
+                    + side.m_partner
+                        * (2.0 * side.r * side.p / eta2 * (side.v - v_star).dot(g)
+                            + 0.5 * pi_ij * side.vrel.dot(g))
+                    - 0.5 * side.vrel.dot(side.a_force)
+            }
+        };
+        part
+    };
+    // The pair (i, j), evaluated once: its approach speed and, unless it does not
+    // interact, its shares for i and (with `both`) for j.
+    let eval = |i: usize, a: &Row<D>, j: usize, both: bool| -> PairEval<D> {
+        let r = a.x - ext.position[j];
+        let dist = r.norm();
+        if dist == 0.0 {
+            // Coincident particles exert no force (∇W = 0) and define no axis.
+            return PairEval::QUIET;
+        }
+        let r_hat = r / dist;
+        let g = pk.grad_at(i, j, r, dist);
+        let (vj, rhoj, pj, cj, mj) = (
+            ext.velocity[j],
+            ext.density[j],
+            ext.pressure[j],
+            ext.sound_speed[j],
+            ext.mass[j],
+        );
+        let (vi, rhoi, pi, ci, ri, di) = (a.v, a.rho, a.p, a.c, a.r, a.d);
+        let dj = if damaged { ext.damage[j] } else { 0.0 };
+        let same_material = a.material == ext.material[j];
+        let vij = vi - vj;
+        let approach = -vij.dot(r_hat);
+        // Fractured rock separating in tension does not interact at all
+        // (sph_damage::decoupling); the test is symmetric in (i, j).
+        if decoupled(ext, i, j, r, vij) {
+            return PairEval {
+                approach,
+                ..PairEval::QUIET
+            };
+        }
+
+        // Left (j) and right (i) states along r̂, reconstructed to the midpoint.
+        let (mut ui, mut uj) = (vi.dot(r_hat), vj.dot(r_hat));
+        let (mut pfi, mut pfj) = (pi, pj);
+        // Both sides' velocity gradients, for the limited viscosity, and energy
+        // gradients, for the energy diffusion.
+        let mut l_pair = None;
+        let mut ge_pair = (D::Vector::ZERO, D::Vector::ZERO);
+        if let Some(gr) = grads.map(|g| &g.each) {
+            let gi = &gr[i];
+            let src = &gr[ext.source[j] as usize];
+            // A ghost's gradients are its source's, mapped: M L Mᵀ and M ∇P.
+            let m = &ext.map(j);
+            let (lj, gpj) = if j < ext.n_real {
+                (src.velocity, src.pressure)
+            } else {
+                (
+                    m.mul_tensor(&src.velocity).mul_tensor(&m.transpose()),
+                    m.mul_vec(src.pressure),
+                )
+            };
+            l_pair = Some((gi.velocity, lj));
+            if diffuse {
+                ge_pair = (
+                    gi.energy,
+                    if j < ext.n_real {
+                        src.energy
+                    } else {
+                        m.mul_vec(src.energy)
+                    },
                 );
             }
-            let right = SideState {
-                density: rhoi,
-                velocity: ui,
-                pressure: pfi,
-                sound_speed: ci,
-            };
-            let left = SideState {
-                density: rhoj,
-                velocity: uj,
-                pressure: pfj,
-                sound_speed: cj,
-            };
-            let mut v_star = interface_velocity(
-                &PairInterface {
-                    v_i: vi,
-                    v_j: vj,
-                    r_hat,
-                    right,
-                    left,
-                    damage_i: di,
-                    damage_j: dj,
-                    same_material,
-                },
-                scheme.riemann,
-                scheme.coupling,
+            let half = r * 0.5;
+            let dui = r_hat.dot(gi.velocity.mul_vec(-half));
+            let duj = r_hat.dot(lj.mul_vec(half));
+            (ui, uj) = reconstruct(ui, uj, dui, duj, scheme.limiter);
+            (pfi, pfj) = reconstruct(
+                pi,
+                pj,
+                gi.pressure.dot(-half),
+                gpj.dot(half),
+                scheme.limiter,
             );
-            // FSISPH's density stabilisation (Spheral SolidFSISPHEvaluateDerivatives.cc):
-            // within one material, v* += f_D κ c̄ (1 + min(0, max(−1, v_ij·r̂/c̄)))
-            // clamp((P_j − P_i)/(K_i + K_j), ±¼) r̂, with K + 4G/3 = ρ c_L² and the
-            // reconstructed pressures; symmetric in (i, j), so conservation is unchanged.
-            if scheme.density_stabilization > 0.0 && same_material {
-                let c_bar = pair_bulk_speed(ext, i, j, ci, cj);
-                if c_bar > 0.0 {
-                    let f_d = sph_damage::fsisph_factor(di, dj);
-                    let c_factor = 1.0 + (vij.dot(r_hat) / c_bar).clamp(-1.0, 0.0);
-                    let k_sum = rhoi * ci * ci + rhoj * cj * cj;
-                    let dp = ((pfj - pfi) / k_sum).clamp(-0.25, 0.25);
-                    v_star += r_hat * (f_d * scheme.density_stabilization * c_factor * c_bar * dp);
-                }
+        }
+        let right = SideState {
+            density: rhoi,
+            velocity: ui,
+            pressure: pfi,
+            sound_speed: ci,
+        };
+        let left = SideState {
+            density: rhoj,
+            velocity: uj,
+            pressure: pfj,
+            sound_speed: cj,
+        };
+        let mut v_star = interface_velocity(
+            &PairInterface {
+                v_i: vi,
+                v_j: vj,
+                r_hat,
+                right,
+                left,
+                damage_i: di,
+                damage_j: dj,
+                same_material,
+            },
+            scheme.riemann,
+            scheme.coupling,
+        );
+        // FSISPH's density stabilisation (Spheral SolidFSISPHEvaluateDerivatives.cc):
+        // within one material, v* += f_D κ c̄ (1 + min(0, max(−1, v_ij·r̂/c̄)))
+        // clamp((P_j − P_i)/(K_i + K_j), ±¼) r̂, with K + 4G/3 = ρ c_L² and the
+        // reconstructed pressures; symmetric in (i, j), so conservation is unchanged.
+        if scheme.density_stabilization > 0.0 && same_material {
+            let c_bar = pair_bulk_speed(ext, i, j, ci, cj);
+            if c_bar > 0.0 {
+                let f_d = sph_damage::fsisph_factor(di, dj);
+                let c_factor = 1.0 + (vij.dot(r_hat) / c_bar).clamp(-1.0, 0.0);
+                let k_sum = rhoi * ci * ci + rhoj * cj * cj;
+                let dp = ((pfj - pfi) / k_sum).clamp(-0.25, 0.25);
+                v_star += r_hat * (f_d * scheme.density_stabilization * c_factor * c_bar * dp);
             }
+        }
 
-            let rj = radius(j);
-            let etaj = rhoj * smooth_r(j);
-            let r_bar = 0.5 * (ri + rj);
-            let h_bar = scheme.viscosity_length_factor * 0.5 * (pk.h(i) + pk.h(j));
-            // The viscosity's relative velocity: v_i − v_j, or each side reconstructed to
-            // the midpoint with its limited gradient (Spheral's limited viscosity).
-            let v_visc = match l_pair {
-                Some((li, lj)) if visc.reconstruct => {
-                    let dx_pair = pk.h(i).max(pk.h(j)) / scheme.n_target;
-                    sph_riemann::limited_relative_velocity(vi, vj, &li, &lj, r, dist / dx_pair)
-                }
-                _ => vij,
-            };
-            let c_visc = pair_bulk_speed(ext, i, j, ci, cj);
-            // In RZ the viscous pressure is weighted like the pressure: × r̄/(r_i r_j).
-            let mut pi_ij =
-                visc.pi(v_visc, r, 0.5 * (rhoi + rhoj), c_visc, h_bar) * (r_bar / (ri * rj));
-            if !switch.is_empty() && pi_ij != 0.0 {
-                pi_ij *= 0.5 * (switch_of(i) + switch_of(j));
+        let rj = radius(j);
+        let (etai, etaj) = (a.eta, rhoj * smooth_r(j));
+        let r_bar = 0.5 * (ri + rj);
+        let h_bar = scheme.viscosity_length_factor * 0.5 * (pk.h(i) + pk.h(j));
+        // The viscosity's relative velocity: v_i − v_j, or each side reconstructed to
+        // the midpoint with its limited gradient (Spheral's limited viscosity).
+        let v_visc = match l_pair {
+            Some((li, lj)) if visc.reconstruct => {
+                let dx_pair = pk.h(i).max(pk.h(j)) / scheme.n_target;
+                sph_riemann::limited_relative_velocity(vi, vj, &li, &lj, r, dist / dx_pair)
             }
-            // Artificial stress: m_j f_ij^n (R_i + R_j)·∇_i W (paper §2.3; R from the
-            // total stress, repulsive in tension).
-            let (a_force, f_astress) = if use_astress {
-                let r_sum = ext.astress[i] * (1.0 / ri) + ext.astress[j] * (1.0 / rj);
-                if r_sum.double_dot(&r_sum) > 0.0 || r_tt != 0.0 {
-                    let dp = 0.5 * (ext.spacing0[i] + ext.spacing0[j]);
-                    let f = astress.kernel_factor(pk.w(i, j, r) / pk.w_at(i, j, r_hat, dp));
-                    (r_sum.mul_vec(g) * (mj * f), f)
-                } else {
-                    (D::Vector::ZERO, 0.0)
-                }
+            _ => vij,
+        };
+        let c_visc = pair_bulk_speed(ext, i, j, ci, cj);
+        // In RZ the viscous pressure is weighted like the pressure: × r̄/(r_i r_j).
+        let mut pi_ij =
+            visc.pi(v_visc, r, 0.5 * (rhoi + rhoj), c_visc, h_bar) * (r_bar / (ri * rj));
+        if !switch.is_empty() && pi_ij != 0.0 {
+            pi_ij *= 0.5 * (switch_of(i) + switch_of(j));
+        }
+        // Artificial stress: m_j f_ij^n (R_i + R_j)·∇_i W (paper §2.3; R from the
+        // total stress, repulsive in tension), here per unit mass of the partner.
+        let (a_unit, f_astress) = if use_astress {
+            let r_sum = ext.astress[i] * (1.0 / ri) + ext.astress[j] * (1.0 / rj);
+            // In RZ the factor also carries the hoop part (`finish`), whatever R_i + R_j.
+            if r_sum.double_dot(&r_sum) > 0.0 || rz {
+                let dp = 0.5 * (ext.spacing0[i] + ext.spacing0[j]);
+                let f = astress.kernel_factor(pk.w(i, j, r) / pk.w_at(i, j, r_hat, dp));
+                (r_sum.mul_vec(g) * f, f)
             } else {
                 (D::Vector::ZERO, 0.0)
-            };
-            // The pressure part of the pair force: the particles' pressures (the
-            // study's σ_i + σ_j), or twice the pair's Riemann star pressure.
-            let p_pair = match scheme.momentum {
-                MomentumForm::ParticlePressure => ri * pi + rj * pj,
-                MomentumForm::StarPressure => {
-                    2.0 * r_bar * scheme.riemann.star(&left, &right).pressure
-                }
-            };
-            // Pair force per unit mass of i: m_j[(σ_i + σ_j)/(ρ_iρ_j) − Π]∇W + the
-            // artificial stress, with σ = (1 − D) S − P_D I; symmetric in (i, j) up to
-            // the antisymmetric ∇W.
-            // The pair's deviatoric stresses, weakened by damage: each particle's own
-            // (1 − D) across a material interface, the scheme's coupling within a body.
-            let (si, sj) = if solid {
-                let coupling = scheme.stress_coupling;
-                // Tensor damage: each particle's damage across the pair's direction
-                // (sph_damage::tensor); a scalar damage projects to itself.
-                let (ci, cj) = if ext.damage_tensor.is_empty() {
-                    (di, dj)
-                } else {
-                    let n = sph_core::glam::DVec3::from_array(r_hat.to_array3());
-                    (
-                        projected_damage(&ext.damage_tensor[i], n),
-                        projected_damage(&ext.damage_tensor[j], n),
-                    )
-                };
-                let sj_undamaged = D::project(&ext.undamaged_stress(j));
-                let (ai, aj) = if !same_material {
-                    coupling.interface_factors(ci, cj)
-                } else if coupling.needs_tension_test() {
-                    // FSISPH: is the pair in tension along its axis?
-                    let s_rr = r_hat.dot((si_undamaged + sj_undamaged).mul_vec(r_hat));
-                    coupling.factors(ci, cj, sph_damage::pair_is_tensile(s_rr, pi + pj))
-                } else {
-                    coupling.factors(ci, cj, false)
-                };
-                (si_undamaged * ai, sj_undamaged * aj)
+            }
+        } else {
+            (D::Vector::ZERO, 0.0)
+        };
+        // The pressure part of the pair force: the particles' pressures (the
+        // study's σ_i + σ_j), or twice the pair's Riemann star pressure.
+        let p_pair = match scheme.momentum {
+            MomentumForm::ParticlePressure => ri * pi + rj * pj,
+            MomentumForm::StarPressure => 2.0 * r_bar * scheme.riemann.star(&left, &right).pressure,
+        };
+        // The pair's deviatoric stresses, weakened by damage: each particle's own
+        // (1 − D) across a material interface, the scheme's coupling within a body.
+        let (si, sj) = if solid {
+            let coupling = scheme.stress_coupling;
+            // Tensor damage: each particle's damage across the pair's direction
+            // (sph_damage::tensor); a scalar damage projects to itself.
+            let (ci, cj) = if ext.damage_tensor.is_empty() {
+                (di, dj)
             } else {
-                (D::Tensor::ZERO, D::Tensor::ZERO)
+                let n = sph_core::glam::DVec3::from_array(r_hat.to_array3());
+                (
+                    projected_damage(&ext.damage_tensor[i], n),
+                    projected_damage(&ext.damage_tensor[j], n),
+                )
             };
-            let force = match momentum_corrections {
-                // σ_i (C_i∇W) + σ_j (C_j∇W), C = M⁻ᵀ (a ghost's is its source's, mapped
-                // like a tensor): antisymmetric in (i, j) like the plain form.
-                Some(c) if scheme.momentum == MomentumForm::ParticlePressure => {
-                    let cj = if j < ext.n_real {
-                        c[j]
-                    } else {
-                        let m = ext.map(j);
-                        m.mul_tensor(&c[ext.source[j] as usize])
-                            .mul_tensor(&m.transpose())
-                    };
-                    let (gi, gj) = (c[i].mul_vec(g), cj.mul_vec(g));
-                    let mut f = (gi * (-ri * pi) + gj * (-rj * pj)) * (mj / (etai * etaj))
-                        - g * (mj * pi_ij)
-                        + a_force;
-                    if solid {
-                        f += (si.mul_vec(gi) * ri + sj.mul_vec(gj) * rj) * (mj / (etai * etaj));
-                    }
-                    f
-                }
-                _ => {
-                    let coef = -p_pair / (etai * etaj) - pi_ij;
-                    let mut f = g * (mj * coef) + a_force;
-                    if solid {
-                        f += (si * ri + sj * rj).mul_vec(g) * (mj / (etai * etaj));
-                    }
-                    f
-                }
-            };
-            // An unbonded interface (two different materials) carries no tension: a pair
-            // whose force would pull i toward j does not interact at all (no force, and
-            // no density or energy change, so the opening gap does not stretch either
-            // side). The test is the same for (i, j) and (j, i), so momentum balances.
-            let contact = ext.is_unilateral(j);
-            if !contact && scheme.unbonded_interfaces && !same_material && force.dot(r_hat) < 0.0 {
-                continue;
-            }
-            // The pair's contributions, to i's sums or, for a ghost of a contact wall, to
-            // the wall's (decided on below the loop).
-            let mut part = PairPart {
-                dv: force,
-                ..PairPart::ZERO
-            };
-            if rz {
-                let vx = mj / etaj * g.component(0);
-                part.gauge_a = vx;
-                part.gauge_g = vx * rj;
-                // 1/r_i + 1/r_j = 2/r_j + (r_j − r_i)/(r_i r_j): the first part is the
-                // Cartesian pair term of R/r (zero for a uniform R on a complete
-                // lattice), the second the geometric part the hoop force cancels.
-                part.astress_hoop = mj * f_astress * (rj - ri) / (ri * rj) * g.component(0);
-            }
-            // The continuity equation uses the corrected gradient when enabled.
-            let gc = match grads {
-                Some(gr) if scheme.gradient_correction => gr.correction[i].mul_vec(g),
-                _ => g,
-            };
-            let dvs = (vi - v_star).dot(gc);
-            part.drho = match scheme.density {
-                DensityForm::Volume => 2.0 * etai * mj / etaj * dvs,
-                DensityForm::Mass => 2.0 * mj * dvs,
-                // Summation density is recomputed from positions each stage.
-                DensityForm::Summation => 0.0,
-            };
-            // Energy: the compatible form pairs with the plain (antisymmetric) gradient
-            // of the momentum equation, which is what makes it exactly conservative.
-            let dvs_plain = (vi - v_star).dot(g);
-            part.de = match scheme.energy {
-                EnergyForm::Compatible => {
-                    part.work = force.dot(v_star);
-                    -force.dot(vi - v_star)
-                }
-                EnergyForm::Study => {
-                    // −2 m_j/(ρ_iρ_j) (v_i − v*)·(σ_i ∇W) with σ_i = S_i − P_i I, plus
-                    // the viscous and artificial-stress heating.
-                    let shear = if solid {
-                        -2.0 * mj * ri / (etai * etaj) * (vi - v_star).dot(si.mul_vec(g))
-                    } else {
-                        0.0
-                    };
-                    shear
-                        + mj * (2.0 * ri * pi / (etai * etaj) * dvs_plain
-                            + 0.5 * pi_ij * vij.dot(g))
-                        - 0.5 * vij.dot(a_force)
-                }
-            };
-            // FSISPH's energy diffusion between same-material pairs (Spheral
-            // SolidFSISPHEvaluateDerivatives.cc): κ c_eff (ẽ_i − ẽ_j) η·∇W̄/(ρ̄ |η|²) with
-            // ẽ the energies reconstructed to the midpoint (Spheral's limiter), c_eff = max(0, min(c̄,
-            // c̄ + v_ij·r̂)) and η = r/h̄. Antisymmetric in (i, j), so Σ m e is unchanged.
-            if diffuse && same_material {
-                let (ei, ej) = (ext.specific_energy[i], ext.specific_energy[j]);
-                let half = r * 0.5;
-                let (ei_t, ej_t) = sph_riemann::spheral_reconstruct(
-                    ei,
-                    ej,
-                    ge_pair.0.dot(half),
-                    ge_pair.1.dot(half),
-                );
-                let c_bar = pair_bulk_speed(ext, i, j, ci, cj);
-                let c_eff = (c_bar + vij.dot(r_hat)).min(c_bar).max(0.0);
-                let h_pair = 0.5 * (pk.h(i) + pk.h(j));
-                let eta = r / h_pair;
-                let eta_bar = 0.5 * (etai + etaj);
-                let diffusion = scheme.energy_diffusion * c_eff * (ei_t - ej_t) * eta.dot(g)
-                    / (eta_bar * eta.norm_squared());
-                part.work += mj * diffusion;
-                part.de += mj * diffusion;
-            }
-            if contact {
-                wall.add(&part);
-                wall_normal += r_hat;
+            let sj_undamaged = D::project(&ext.undamaged_stress(j));
+            let (ai, aj) = if !same_material {
+                coupling.interface_factors(ci, cj)
+            } else if coupling.needs_tension_test() {
+                // FSISPH: is the pair in tension along its axis?
+                let s_rr = r_hat.dot((a.s_undamaged + sj_undamaged).mul_vec(r_hat));
+                coupling.factors(ci, cj, sph_damage::pair_is_tensile(s_rr, pi + pj))
             } else {
-                if j >= ext.n_real {
-                    dv_boundary += force;
+                coupling.factors(ci, cj, false)
+            };
+            (a.s_undamaged * ai, sj_undamaged * aj)
+        } else {
+            (D::Tensor::ZERO, D::Tensor::ZERO)
+        };
+        // The pair force per unit mass of i and of the partner: dv_i/dt gets m_j F and
+        // dv_j/dt gets −m_i F, with F = [(σ_i + σ_j)/(η_iη_j) − Π]∇W + the artificial
+        // stress, σ = (1 − D) S − P_D I; F is antisymmetric in (i, j) through ∇W.
+        let f_pair = match momentum_corrections {
+            // σ_i (C_i∇W) + σ_j (C_j∇W), C = M⁻ᵀ (a ghost's is its source's, mapped
+            // like a tensor): antisymmetric in (i, j) like the plain form.
+            Some(c) if scheme.momentum == MomentumForm::ParticlePressure => {
+                let cj = if j < ext.n_real {
+                    c[j]
+                } else {
+                    let m = ext.map(j);
+                    m.mul_tensor(&c[ext.source[j] as usize])
+                        .mul_tensor(&m.transpose())
+                };
+                let (gi, gj) = (c[i].mul_vec(g), cj.mul_vec(g));
+                let mut f =
+                    (gi * (-ri * pi) + gj * (-rj * pj)) / (etai * etaj) - g * pi_ij + a_unit;
+                if solid {
+                    f += (si.mul_vec(gi) * ri + sj.mul_vec(gj) * rj) / (etai * etaj);
                 }
-                own.add(&part);
+                f
+            }
+            _ => {
+                let coef = -p_pair / (etai * etaj) - pi_ij;
+                let mut f = g * coef + a_unit;
+                if solid {
+                    f += (si * ri + sj * rj).mul_vec(g) / (etai * etaj);
+                }
+                f
+            }
+        };
+        let force = f_pair * mj;
+        // An unbonded interface (two different materials) carries no tension: a pair
+        // whose force would pull i toward j does not interact at all (no force, and
+        // no density or energy change, so the opening gap does not stretch either
+        // side). The test is the same for (i, j) and (j, i), so momentum balances.
+        let contact = ext.is_unilateral(j);
+        if !contact && scheme.unbonded_interfaces && !same_material && force.dot(r_hat) < 0.0 {
+            return PairEval {
+                approach,
+                ..PairEval::QUIET
+            };
+        }
+        let mut to_i = share(
+            &Share {
+                index: i,
+                g,
+                force,
+                a_force: a_unit * mj,
+                v: vi,
+                vrel: vij,
+                r: ri,
+                r_partner: rj,
+                p: pi,
+                s: si,
+                eta: etai,
+                eta_partner: etaj,
+                m_partner: mj,
+            },
+            v_star,
+            pi_ij,
+            f_astress,
+        );
+        let mut to_j = if both {
+            let mi = ext.mass[i];
+            share(
+                &Share {
+                    index: j,
+                    g: -g,
+                    force: f_pair * -mi,
+                    a_force: a_unit * -mi,
+                    v: vj,
+                    vrel: -vij,
+                    r: rj,
+                    r_partner: ri,
+                    p: pj,
+                    s: sj,
+                    eta: etaj,
+                    eta_partner: etai,
+                    m_partner: mi,
+                },
+                v_star,
+                pi_ij,
+                f_astress,
+            )
+        } else {
+            PairPart::ZERO
+        };
+        // FSISPH's energy diffusion between same-material pairs (Spheral
+        // SolidFSISPHEvaluateDerivatives.cc): κ c_eff (ẽ_i − ẽ_j) η·∇W̄/(ρ̄ |η|²) with
+        // ẽ the energies reconstructed to the midpoint (Spheral's limiter), c_eff = max(0, min(c̄,
+        // c̄ + v_ij·r̂)) and η = r/h̄. Antisymmetric in (i, j), so Σ m e is unchanged.
+        if diffuse && same_material {
+            let (ei, ej) = (ext.specific_energy[i], ext.specific_energy[j]);
+            let half = r * 0.5;
+            let (ei_t, ej_t) =
+                sph_riemann::spheral_reconstruct(ei, ej, ge_pair.0.dot(half), ge_pair.1.dot(half));
+            let c_bar = pair_bulk_speed(ext, i, j, ci, cj);
+            let c_eff = (c_bar + vij.dot(r_hat)).min(c_bar).max(0.0);
+            let h_pair = 0.5 * (pk.h(i) + pk.h(j));
+            let eta = r / h_pair;
+            let eta_bar = 0.5 * (etai + etaj);
+            let diffusion = scheme.energy_diffusion * c_eff * (ei_t - ej_t) * eta.dot(g)
+                / (eta_bar * eta.norm_squared());
+            to_i.work += mj * diffusion;
+            to_i.de += mj * diffusion;
+            if both {
+                let mi = ext.mass[i];
+                to_j.work -= mi * diffusion;
+                to_j.de -= mi * diffusion;
             }
         }
-        // A contact wall (`Boundary::Contact`, an anvil) pushes but cannot pull: its
-        // ghosts act on i as a mirror's do while their total force pushes i away from
-        // the wall (along Σ r̂, from the ghosts to i), and not at all when it would pull
-        // i toward it: i is then at a free surface and may lift off. The decision is on
-        // the total, as a contact's traction is: deciding pair by pair dropped the
-        // oblique pairs that a tension along the wall makes attractive, with their share
-        // of the push, and drove material pressed onto the wall into it (test
-        // `a_contact_wall_in_compression_acts_as_a_mirror_under_lateral_tension`).
-        if wall.dv.dot(wall_normal) > 0.0 {
-            dv_boundary += wall.dv;
-            own.add(&wall);
+        PairEval {
+            approach,
+            parts: Some((to_i, to_j)),
+            contact,
+            r_hat,
         }
-        (out.dv, out.drho, out.de, out.work) = (own.dv, own.drho, own.de, own.work);
-        let (gauge_a, gauge_g, astress_hoop_sum) = (own.gauge_a, own.gauge_g, own.astress_hoop);
+    };
+    // Particle i's rates and hoop gauge (1 outside RZ) from its completed pair sums.
+    let finish = |i: usize, own: &PairPart<D>, approach: f64| -> (Rates<D>, f64) {
+        let mut out = Rates {
+            drho: own.drho,
+            dv: own.dv,
+            de: own.de,
+            approach,
+            work: own.work,
+        };
+        let mut hoop_gauge = 1.0;
         // The grad-h factor makes the continuity equation the time derivative of the
         // summation density with h ∝ ρ^(−1/d) (Springel & Hernquist 2002; Price
         // 2012, eq. 39); without it the density drifts wherever h changes fast, as
@@ -828,6 +1041,7 @@ fn rates_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
             out.drho /= gr.each[i].omega.clamp(0.5, 2.0);
         }
         if rz {
+            let ri = ext.radius[i];
             // ŝ = r_i Σ V_j ∂_r W + Σ V_j r_j ∂_r W balances the pair sums' estimate of
             // ∂(r σ_rr)/∂r for a uniform stress, which the axis' mirror images and R̂
             // bias within two support radii of the axis. Farther out that bias is gone
@@ -838,55 +1052,105 @@ fn rates_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
             // (HOOP_GAUGE_RANGE), for bodies only a few support radii across, whose free
             // surface lies inside the zone. axisymmetric.rs.
             let keep = axis_zone(ri / pk.h(i));
-            let s_hat = (ri * gauge_a + gauge_g).clamp(HOOP_GAUGE_RANGE.0, HOOP_GAUGE_RANGE.1);
+            let s_hat =
+                (ri * own.gauge_a + own.gauge_g).clamp(HOOP_GAUGE_RANGE.0, HOOP_GAUGE_RANGE.1);
             hoop_gauge = keep * s_hat + (1.0 - keep);
             // The hoop part of the artificial stress: −R_θθ,i Σ_j m_j f_ij^n (r_j − r_i)/
             // (r_i r_j) ∂_r W_ij along r, so that a uniform R exerts no force, as in
             // Cartesian runs (without it a uniform tension pulled rings toward the axis
             // at (0.25–0.75) ε|P|/(ρ r)). Its work goes to the internal energy: in the
             // compatible form through de = W − v·(dv/dt), in the study's form here.
-            let a_r = -r_tt * astress_hoop_sum;
+            let a_r = -hoop_astress(i) * own.astress_hoop;
             if a_r != 0.0 {
                 let mut a = D::Vector::ZERO;
                 a.set_component(0, a_r);
                 out.dv += a;
                 if scheme.energy == EnergyForm::Study {
-                    out.de -= vi.component(0) * a_r;
+                    out.de -= ext.velocity[i].component(0) * a_r;
                 }
             }
         }
-        (out, dv_boundary, hoop_gauge)
+        (out, hoop_gauge)
     };
-    // Each task fills a block of rows in place and lists its boundary particles; the
-    // lists come back in block order, so the result is the same for any thread count.
+    // Each block of rows (pair_blocks.rs) sums its pairs, then finishes its rows in
+    // place and lists its boundary particles; the lists come back in block order.
     let n = ext.n_real;
     let mut each = vec![Rates::ZERO; n];
     let mut hoop_gauge = if rz { vec![1.0; n] } else { Vec::new() };
-    let fill = |block: usize, rows: &mut [Rates<D>], mut gauge: Option<&mut [f64]>| {
+    let fill = |b: usize, out: &mut [Rates<D>], mut gauge: Option<&mut [f64]>| {
+        let (start, end) = (b * rows, b * rows + out.len());
+        let mut own = vec![PairPart::<D>::ZERO; out.len()];
+        let mut approach = vec![0.0_f64; out.len()];
         let mut boundary = Vec::new();
-        for (k, slot) in rows.iter_mut().enumerate() {
-            let i = block * ROWS_PER_TASK + k;
-            let (r, b, g) = pair_sums(i);
+        for i in start..end {
+            let a = row(i);
+            let k = i - start;
+            // i's sums over the ghosts of contact walls, decided on below.
+            let (mut wall, mut wall_normal) = (PairPart::<D>::ZERO, D::Vector::ZERO);
+            let mut dv_boundary = D::Vector::ZERO;
+            for j in list.neighbors(i) {
+                let j = j as usize;
+                let both = match pair_blocks::visit(i, j, start, end) {
+                    pair_blocks::Visit::Done => continue,
+                    pair_blocks::Visit::OwnOnly => false,
+                    pair_blocks::Visit::Both => true,
+                };
+                let e = eval(i, &a, j, both);
+                approach[k] = approach[k].max(e.approach);
+                if both {
+                    approach[j - start] = approach[j - start].max(e.approach);
+                }
+                let Some((to_i, to_j)) = e.parts else {
+                    continue;
+                };
+                if e.contact {
+                    wall.add(&to_i);
+                    wall_normal += e.r_hat;
+                } else {
+                    if j >= ext.n_real {
+                        dv_boundary += to_i.dv;
+                    }
+                    own[k].add(&to_i);
+                    if both {
+                        own[j - start].add(&to_j);
+                    }
+                }
+            }
+            // A contact wall (`Boundary::Contact`, an anvil) pushes but cannot pull: its
+            // ghosts act on i as a mirror's do while their total force pushes i away from
+            // the wall (along Σ r̂, from the ghosts to i), and not at all when it would
+            // pull i toward it: i is then at a free surface and may lift off. The
+            // decision is on the total, as a contact's traction is: deciding pair by pair
+            // dropped the oblique pairs that a tension along the wall makes attractive,
+            // with their share of the push, and drove material pressed onto the wall into
+            // it (test `a_contact_wall_in_compression_acts_as_a_mirror_under_lateral_tension`).
+            if wall.dv.dot(wall_normal) > 0.0 {
+                dv_boundary += wall.dv;
+                own[k].add(&wall);
+            }
+            if dv_boundary != D::Vector::ZERO {
+                boundary.push((i as u32, dv_boundary));
+            }
+        }
+        for (k, slot) in out.iter_mut().enumerate() {
+            let (r, g) = finish(start + k, &own[k], approach[k]);
             *slot = r;
             if let Some(gauge) = gauge.as_deref_mut() {
                 gauge[k] = g;
-            }
-            if b != D::Vector::ZERO {
-                boundary.push((i as u32, b));
             }
         }
         boundary
     };
     let boundary = if rz {
-        each.par_chunks_mut(ROWS_PER_TASK)
-            .zip(hoop_gauge.par_chunks_mut(ROWS_PER_TASK))
+        each.par_chunks_mut(rows)
+            .zip(hoop_gauge.par_chunks_mut(rows))
             .enumerate()
-            .flat_map_iter(|(c, (rows, gauge))| fill(c, rows, Some(gauge)))
+            .flat_map_iter(|(b, (out, gauge))| fill(b, out, Some(gauge)))
             .collect()
     } else {
-        each.par_chunks_mut(ROWS_PER_TASK)
+        each.par_chunks_mut(rows)
             .enumerate()
-            .flat_map_iter(|(c, rows)| fill(c, rows, None))
+            .flat_map_iter(|(b, out)| fill(b, out, None))
             .collect()
     };
     PairRates {

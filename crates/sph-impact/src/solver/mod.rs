@@ -8,6 +8,7 @@ mod derivatives;
 pub mod error;
 mod free_flight;
 pub mod material;
+mod pair_blocks;
 mod pair_kernel;
 pub mod simulation;
 pub mod state;

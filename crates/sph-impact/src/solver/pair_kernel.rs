@@ -26,8 +26,21 @@ pub(crate) trait PairKernel<D: Dimension>: Sync {
         self.dw_dh_own(i, r)
     }
     /// W̄ at distance `d` along the pair axis `r_hat` (artificial-stress normaliser).
+    #[inline(always)]
     fn w_at(&self, i: usize, j: usize, r_hat: D::Vector, d: f64) -> f64 {
         self.w(i, j, r_hat * d)
+    }
+    /// ∇_i W̄ with both particles' own ∂W/∂h, for a pair evaluated once for both
+    /// (pass 1 with the grad-h factor): the same numbers as [`Self::grad_at`] and
+    /// [`Self::dw_dh_own_at`] for i (at r) and for j (at −r), sharing what they have in
+    /// common.
+    #[inline(always)]
+    fn grad_and_dw_dh(&self, i: usize, j: usize, r: D::Vector, dist: f64) -> (D::Vector, f64, f64) {
+        (
+            self.grad_at(i, j, r, dist),
+            self.dw_dh_own_at(i, r, dist),
+            self.dw_dh_own_at(j, -r, dist),
+        )
     }
 }
 
@@ -62,17 +75,17 @@ impl<'a, K: Kernel> ScalarPairKernel<'a, K> {
 }
 
 impl<D: Dimension, K: Kernel> PairKernel<D> for ScalarPairKernel<'_, K> {
-    #[inline]
+    #[inline(always)]
     fn w(&self, i: usize, j: usize, r: D::Vector) -> f64 {
         let d = r.norm();
         0.5 * (self.kernel.f(d * self.inv_h[i]) * self.w_norm[i]
             + self.kernel.f(d * self.inv_h[j]) * self.w_norm[j])
     }
-    #[inline]
+    #[inline(always)]
     fn grad(&self, i: usize, j: usize, r: D::Vector) -> D::Vector {
         <Self as PairKernel<D>>::grad_at(self, i, j, r, r.norm())
     }
-    #[inline]
+    #[inline(always)]
     fn grad_at(&self, i: usize, j: usize, r: D::Vector, dist: f64) -> D::Vector {
         if dist == 0.0 {
             return D::Vector::ZERO;
@@ -81,20 +94,37 @@ impl<D: Dimension, K: Kernel> PairKernel<D> for ScalarPairKernel<'_, K> {
         let gj = self.kernel.df(dist * self.inv_h[j]) * self.g_norm[j];
         r * (0.5 * (gi + gj) / dist)
     }
-    #[inline]
+    #[inline(always)]
     fn h(&self, i: usize) -> f64 {
         self.h[i]
     }
-    #[inline]
+    #[inline(always)]
     fn dw_dh_own(&self, i: usize, r: D::Vector) -> f64 {
         <Self as PairKernel<D>>::dw_dh_own_at(self, i, r, r.norm())
     }
-    #[inline]
+    #[inline(always)]
     fn dw_dh_own_at(&self, i: usize, _r: D::Vector, dist: f64) -> f64 {
         // W = σ h^(−d) f(r/h): ∂W/∂h = −σ h^(−d−1) (d f + q f').
         let q = dist * self.inv_h[i];
         let d = D::DIM as f64;
         -self.g_norm[i] * (d * self.kernel.f(q) + q * self.kernel.df(q))
+    }
+    #[inline(always)]
+    fn grad_and_dw_dh(&self, i: usize, j: usize, r: D::Vector, dist: f64) -> (D::Vector, f64, f64) {
+        // Each side's kernel and its derivative once, in the expressions of grad_at and
+        // dw_dh_own_at, so the numbers are theirs to the bit.
+        let d = D::DIM as f64;
+        let (qi, qj) = (dist * self.inv_h[i], dist * self.inv_h[j]);
+        let (dfi, dfj) = (self.kernel.df(qi), self.kernel.df(qj));
+        let dw_dh_i = -self.g_norm[i] * (d * self.kernel.f(qi) + qi * dfi);
+        let dw_dh_j = -self.g_norm[j] * (d * self.kernel.f(qj) + qj * dfj);
+        let grad = if dist == 0.0 {
+            D::Vector::ZERO
+        } else {
+            let (gi, gj) = (dfi * self.g_norm[i], dfj * self.g_norm[j]);
+            r * (0.5 * (gi + gj) / dist)
+        };
+        (grad, dw_dh_i, dw_dh_j)
     }
 }
 
@@ -181,6 +211,42 @@ mod tests {
         for dir in [DVec2::X, DVec2::Y] {
             let w = PairKernel::<Dim2>::w_at(&tk, 0, 1, dir, d);
             assert!((w / iso - 1.0).abs() < 1e-14, "{w} {iso}");
+        }
+    }
+
+    /// The shared evaluation of a pair's gradient and both sides' ∂W/∂h gives the
+    /// separate methods' numbers to the bit, for the scalar kernel (its own expression)
+    /// and the tensor kernel (the default), coincident particles included.
+    #[test]
+    fn grad_and_dw_dh_equal_the_separate_evaluations() {
+        let radii = [1.0e-3, 1.7e-3];
+        let sk = ScalarPairKernel::new(WendlandC2, &radii, 2);
+        let tensor = [
+            DMat2::from_diagonal(DVec2::new(1.0 / radii[0], 1.0 / radii[0])),
+            DMat2::from_diagonal(DVec2::new(0.8 / radii[1], 1.3 / radii[1])),
+        ];
+        let tk = TensorPairKernel {
+            kernel: WendlandC2,
+            h_tensor: &tensor,
+            h: &radii,
+        };
+        for r in [
+            DVec2::new(0.0, 0.0),
+            DVec2::new(3.1e-4, -2.2e-4),
+            DVec2::new(-9.0e-4, 4.0e-4),
+            DVec2::new(1.5e-3, 0.2e-3),
+        ] {
+            let dist = r.length();
+            for (i, j) in [(0, 1), (1, 0)] {
+                let (g, wi, wj) = PairKernel::<Dim2>::grad_and_dw_dh(&sk, i, j, r, dist);
+                assert_eq!(g, PairKernel::<Dim2>::grad_at(&sk, i, j, r, dist));
+                assert_eq!(wi, PairKernel::<Dim2>::dw_dh_own_at(&sk, i, r, dist));
+                assert_eq!(wj, PairKernel::<Dim2>::dw_dh_own_at(&sk, j, -r, dist));
+                let (g, wi, wj) = PairKernel::<Dim2>::grad_and_dw_dh(&tk, i, j, r, dist);
+                assert_eq!(g, PairKernel::<Dim2>::grad_at(&tk, i, j, r, dist));
+                assert_eq!(wi, PairKernel::<Dim2>::dw_dh_own_at(&tk, i, r, dist));
+                assert_eq!(wj, PairKernel::<Dim2>::dw_dh_own_at(&tk, j, -r, dist));
+            }
         }
     }
 }

@@ -18,6 +18,7 @@ use crate::solver::derivatives::{
 use crate::solver::error::SolverError;
 use crate::solver::free_flight::{FreeFlight, leaving};
 use crate::solver::material::Material;
+use crate::solver::pair_blocks;
 use crate::solver::pair_kernel::{ScalarPairKernel, TensorPairKernel, equivalent_radius};
 use crate::solver::state::{Extended, State};
 use crate::solver::timestep::{TimestepVote, acceleration_vote, cfl_vote, density_vote};
@@ -149,6 +150,9 @@ pub struct Simulation<D: Dimension, K: Kernel> {
     radius0: Vec<f64>,
     /// The first step's vote (the reference of `SchemeConfig::dt_floor_fraction`).
     first_dt: Option<f64>,
+    /// Rows per block of the pair passes; None: the automatic size. See
+    /// [`Self::set_pair_block_rows`].
+    pair_block_rows: Option<usize>,
     kernel: K,
     search: CellList,
     /// The particles in free flight (`SchemeConfig::free_flight_above`).
@@ -269,6 +273,7 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
             axis_crossings_midpoint: 0,
             held: Vec::new(),
             first_dt: None,
+            pair_block_rows: None,
             radius0,
             smoothed_radius: rz.then(|| {
                 SmoothedRadius::new(|u, v| {
@@ -280,6 +285,21 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
             flight: FreeFlight::default(),
             midpoint: State::default(),
         })
+    }
+
+    /// Sets the rows per block of the pair passes (None: the automatic size, which
+    /// depends on the particle count only). A pair of two particles in one block is
+    /// evaluated once for both, any other from each side, so `Some(1)` evaluates every
+    /// pair from both of its particles, as a plain gather does: the results then differ
+    /// from the automatic blocks only at round-off, which is how the pair-once
+    /// evaluation is tested (tests/pair_once.rs). Results never depend on the thread
+    /// count. Panics if `rows` is `Some(0)`.
+    pub fn set_pair_block_rows(&mut self, rows: Option<usize>) {
+        assert!(
+            rows != Some(0),
+            "a block of the pair passes needs at least one row"
+        );
+        self.pair_block_rows = rows;
     }
 
     /// Holds the velocity of the particles at `indices` at their current value for the
@@ -621,11 +641,14 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
             keep_correction: self.scheme.momentum_correction,
             grad_h: self.scheme.grad_h,
         };
+        let rows = self
+            .pair_block_rows
+            .unwrap_or_else(|| pair_blocks::block_rows(ext.n_real));
         let (grads, rates_out, t3) = if ext.h_tensor.is_empty() {
             let pk = ScalarPairKernel::new(self.kernel, &ext.h, D::DIM);
-            let g = need_grads.then(|| gradients(&ext, &list, &pk, options));
+            let g = need_grads.then(|| gradients(&ext, &list, &pk, options, rows));
             let t3 = Instant::now();
-            let r = rates(&ext, &list, &pk, g.as_ref(), &self.scheme);
+            let r = rates(&ext, &list, &pk, g.as_ref(), &self.scheme, rows);
             (g, r, t3)
         } else {
             let pk = TensorPairKernel {
@@ -633,9 +656,9 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
                 h_tensor: &ext.h_tensor,
                 h: &ext.h,
             };
-            let g = need_grads.then(|| gradients(&ext, &list, &pk, options));
+            let g = need_grads.then(|| gradients(&ext, &list, &pk, options, rows));
             let t3 = Instant::now();
-            let r = rates(&ext, &list, &pk, g.as_ref(), &self.scheme);
+            let r = rates(&ext, &list, &pk, g.as_ref(), &self.scheme, rows);
             (g, r, t3)
         };
         let PairRates {
