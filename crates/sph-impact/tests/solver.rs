@@ -367,7 +367,7 @@ fn only_sedov_takes_a_deposit() {
 #[test]
 #[ignore = "three resolutions; about 30 s in release: cargo test -p sph-impact --release --test solver -- --ignored"]
 fn sod_converges() {
-    // docs/verification.md, "1-D Riemann problems", at 400, 800 and 1600: order ≥ 0.8 and every
+    // docs/verification/sod.md, at 400, 800 and 1600: order ≥ 0.8 and every
     // resolution's star state within 2 % and shock within one spacing.
     let runs: Vec<_> = [400, 800, 1600]
         .iter()

@@ -4,8 +4,8 @@
 use crate::materials::Location;
 use std::fmt;
 
-/// A study error. Bad study files are located (`study.toml:12:9: `parameter[1].path`:
-/// …`); errors of a running study (a run directory that cannot be written) name the
+/// A study error. Bad study files are located (``study.toml:12:9: `parameter[1].path`: …``);
+/// errors of a running study (a run directory that cannot be written) name the
 /// path.
 #[derive(Clone, Debug, PartialEq)]
 pub struct StudyError {

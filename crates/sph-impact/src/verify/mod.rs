@@ -52,7 +52,7 @@ enum Form {
 /// A verification problem.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Problem {
-    /// Sod's shock tube, γ = 1.4, t = 0.2 (docs/verification.md, "1-D Riemann problems").
+    /// Sod's shock tube, γ = 1.4, t = 0.2 (docs/verification/sod.md).
     Sod,
     /// Toro's test 2 ("123"), near vacuum, t = 0.15.
     Toro123,
@@ -192,7 +192,7 @@ impl Problem {
             // With 4 spacings the rarefaction plateau keeps p* ≈ 0.5 % low at every
             // resolution past 800 (the zeroth-order SPH error), which stalls the L1 order
             // (0.64 for 800 → 1600); with 5 the bias halves with each doubling and the order
-            // stays ≥ 0.9 (docs/verification.md, Sod).
+            // stays ≥ 0.9 (docs/verification/sod.md, "Why n_target 5").
             s.n_target = 5.0;
         }
         if matches!(self, Problem::Plate | Problem::Rings) {

@@ -1,0 +1,123 @@
+//! The verification pages (docs/verification/) and their data files
+//! (docs/verification/data/): each page's table is made from its data file, and the code
+//! reproduces the data file's numbers within the file's tolerances, so that page, data
+//! and code cannot drift apart. When a change moves a number, the data file is
+//! re-measured (its header gives the command) and the failure prints the page's new table.
+
+use serde::Deserialize;
+use sph_impact::verify::Problem;
+use std::collections::BTreeMap;
+use std::path::PathBuf;
+
+fn docs() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../docs/verification")
+}
+
+/// One resolution's reference numbers: `verify PROBLEM --json` keys.
+#[derive(Debug, Deserialize)]
+struct Run {
+    resolution: usize,
+    /// Run by `cargo test` (false: too slow for it; `--ignored` runs it).
+    tested: bool,
+    #[serde(flatten)]
+    values: BTreeMap<String, f64>,
+}
+
+/// A data file: the problem, the absolute tolerance of each key, the runs.
+#[derive(Debug, Deserialize)]
+struct Data {
+    problem: String,
+    tolerance: BTreeMap<String, f64>,
+    run: Vec<Run>,
+}
+
+fn data(name: &str) -> Data {
+    let path = docs().join("data").join(format!("{name}.toml"));
+    let text = std::fs::read_to_string(&path).unwrap();
+    toml::from_str(&text).unwrap_or_else(|e| panic!("{}: {e}", path.display()))
+}
+
+/// A signed number with a Unicode minus, `decimals` after the point.
+fn signed(x: f64, decimals: usize) -> String {
+    let s = format!("{:+.*}", decimals, x);
+    s.replacen('-', "−", 1)
+}
+
+/// The page's table of a 1-D Riemann problem's runs: L1(ρ) with its observed order,
+/// the star state's errors, the shock's error in local spacings, the steps.
+fn riemann_table(d: &Data) -> String {
+    let mut t = String::from(
+        "| N | L1(ρ) | order | p* error | u* error | shock error (local spacings) | steps |\n\
+         |---|---|---|---|---|---|---|\n",
+    );
+    let mut previous: Option<(usize, f64)> = None;
+    for r in &d.run {
+        let v = |k: &str| r.values[k];
+        let l1 = v("l1_rho");
+        let order = previous.map_or("–".to_string(), |(n0, l0)| {
+            format!(
+                "{:.2}",
+                (l0 / l1).ln() / (r.resolution as f64 / n0 as f64).ln()
+            )
+        });
+        t += &format!(
+            "| {} | {l1:.4e} | {} | {} % | {} % | {} | {} |\n",
+            r.resolution,
+            order,
+            signed(100.0 * v("p_star_error_relative"), 2),
+            signed(100.0 * v("u_star_error_relative"), 2),
+            signed(v("shock_error_in_spacings"), 2),
+            v("steps")
+        );
+        previous = Some((r.resolution, l1));
+    }
+    t
+}
+
+/// Runs the data file's runs (those `tested`, or all) and compares every value.
+fn check_runs(d: &Data, problem: Problem, all: bool) {
+    for r in d.run.iter().filter(|r| all || r.tested) {
+        let o = problem.run(Some(r.resolution)).unwrap();
+        for (key, expected) in &r.values {
+            let tolerance = d.tolerance[key];
+            let got = o
+                .get(key)
+                .unwrap_or_else(|| panic!("{}: no key {key}", d.problem));
+            assert!(
+                (got - expected).abs() <= tolerance,
+                "{} at {}: {key} = {got}, the data file has {expected} (± {tolerance}): \
+                 re-measure docs/verification/data/{}.toml",
+                d.problem,
+                r.resolution,
+                d.problem
+            );
+        }
+    }
+}
+
+fn check_page(name: &str, table: &str) {
+    let page = std::fs::read_to_string(docs().join(format!("{name}.md"))).unwrap();
+    assert!(
+        page.contains(table),
+        "docs/verification/{name}.md does not show its data file's table; it should read:\n{table}"
+    );
+}
+
+#[test]
+fn sod_page_data_and_code_agree() {
+    let d = data("sod");
+    assert_eq!(d.problem, "sod");
+    for r in &d.run {
+        for key in r.values.keys() {
+            assert!(d.tolerance.contains_key(key), "sod: no tolerance for {key}");
+        }
+    }
+    check_page("sod", &riemann_table(&d));
+    check_runs(&d, Problem::Sod, false);
+}
+
+#[test]
+#[ignore = "N = 1600 as well: about 11 s in release; cargo test -p sph-impact --release --test verification_pages -- --ignored"]
+fn sod_every_resolution_of_the_data_file() {
+    check_runs(&data("sod"), Problem::Sod, true);
+}
