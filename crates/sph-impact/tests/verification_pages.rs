@@ -23,12 +23,79 @@ struct Run {
     values: BTreeMap<String, f64>,
 }
 
-/// A data file: the problem, the absolute tolerance of each key, the runs.
+/// A data file: the problem, the absolute tolerance of each key, the runs, and the
+/// columns of the page's table (for problems without a table of their own).
 #[derive(Debug, Deserialize)]
 struct Data {
     problem: String,
     tolerance: BTreeMap<String, f64>,
     run: Vec<Run>,
+    #[serde(default)]
+    column: Vec<Column>,
+}
+
+/// A column of the page's table: a key, its heading, and how it is printed: `sci4`
+/// (1.2345e-2), `fixedN` (N decimals), `signedN` (N decimals with a sign), `percentN`
+/// (× 100, N decimals, a sign and " %"), `integer`.
+#[derive(Debug, Deserialize)]
+struct Column {
+    key: String,
+    label: String,
+    format: String,
+}
+
+impl Column {
+    fn print(&self, x: f64) -> String {
+        let digits = |prefix: &str| -> usize {
+            self.format[prefix.len()..]
+                .parse()
+                .unwrap_or_else(|_| panic!("column {}: format {}", self.key, self.format))
+        };
+        match self.format.as_str() {
+            "sci4" => format!("{x:.4e}"),
+            "integer" => format!("{x:.0}"),
+            f if f.starts_with("fixed") => format!("{:.*}", digits("fixed"), x),
+            f if f.starts_with("signed") => signed(x, digits("signed")),
+            f if f.starts_with("percent") => format!("{} %", signed(100.0 * x, digits("percent"))),
+            f => panic!("column {}: unknown format {f}", self.key),
+        }
+    }
+}
+
+/// The page's table from the data file's columns: one row per run.
+fn column_table(d: &Data) -> String {
+    let mut t = String::from("| N |");
+    let mut rule = String::from("|---|");
+    for c in &d.column {
+        t += &format!(" {} |", c.label);
+        rule += "---|";
+    }
+    t += &format!("\n{rule}\n");
+    for r in &d.run {
+        t += &format!("| {} |", r.resolution);
+        for c in &d.column {
+            t += &format!(" {} |", c.print(r.values[&c.key]));
+        }
+        t += "\n";
+    }
+    t
+}
+
+/// The checks of one page: every value has a tolerance, the page shows `table`, and the
+/// code reproduces the tested runs.
+fn check_problem(name: &str, problem: Problem, table: impl Fn(&Data) -> String) {
+    let d = data(name);
+    assert_eq!(d.problem, name);
+    for r in &d.run {
+        for key in r.values.keys() {
+            assert!(
+                d.tolerance.contains_key(key),
+                "{name}: no tolerance for {key}"
+            );
+        }
+    }
+    check_page(name, &table(&d));
+    check_runs(&d, problem, false);
 }
 
 fn data(name: &str) -> Data {
@@ -105,15 +172,17 @@ fn check_page(name: &str, table: &str) {
 
 #[test]
 fn sod_page_data_and_code_agree() {
-    let d = data("sod");
-    assert_eq!(d.problem, "sod");
-    for r in &d.run {
-        for key in r.values.keys() {
-            assert!(d.tolerance.contains_key(key), "sod: no tolerance for {key}");
-        }
-    }
-    check_page("sod", &riemann_table(&d));
-    check_runs(&d, Problem::Sod, false);
+    check_problem("sod", Problem::Sod, riemann_table);
+}
+
+#[test]
+fn toro123_page_data_and_code_agree() {
+    check_problem("toro123", Problem::Toro123, column_table);
+}
+
+#[test]
+fn toro3_page_data_and_code_agree() {
+    check_problem("toro3", Problem::Toro3, column_table);
 }
 
 #[test]
