@@ -186,7 +186,15 @@ fn toro3_page_data_and_code_agree() {
 }
 
 #[test]
-#[ignore = "N = 1600 as well: about 11 s in release; cargo test -p sph-impact --release --test verification_pages -- --ignored"]
-fn sod_every_resolution_of_the_data_file() {
+fn noh_planar_page_data_and_code_agree() {
+    check_problem("noh_planar", Problem::NohPlanar, column_table);
+}
+
+#[test]
+#[ignore = "Sod at 1600, Noh at 400 as well: about 20 s in release; cargo test -p sph-impact --release --test verification_pages -- --ignored"]
+fn every_resolution_of_the_data_files() {
     check_runs(&data("sod"), Problem::Sod, true);
+    check_runs(&data("toro123"), Problem::Toro123, true);
+    check_runs(&data("toro3"), Problem::Toro3, true);
+    check_runs(&data("noh_planar"), Problem::NohPlanar, true);
 }
