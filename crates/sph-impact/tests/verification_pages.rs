@@ -52,7 +52,10 @@ impl Column {
                 .unwrap_or_else(|_| panic!("column {}: format {}", self.key, self.format))
         };
         match self.format.as_str() {
-            "sci4" => format!("{x:.4e}"),
+            "sci4" => {
+                let s = format!("{x:.4e}");
+                s.strip_prefix('-').map_or(s.clone(), |m| format!("−{m}"))
+            }
             "integer" => format!("{x:.0}"),
             f if f.starts_with("fixed") => format!("{:.*}", digits("fixed"), x),
             f if f.starts_with("signed") => signed(x, digits("signed")),
@@ -191,10 +194,16 @@ fn noh_planar_page_data_and_code_agree() {
 }
 
 #[test]
+fn elastic_bar_page_data_and_code_agree() {
+    check_problem("elastic_bar", Problem::ElasticBar, column_table);
+}
+
+#[test]
 #[ignore = "Sod at 1600, Noh at 400 as well: about 20 s in release; cargo test -p sph-impact --release --test verification_pages -- --ignored"]
 fn every_resolution_of_the_data_files() {
     check_runs(&data("sod"), Problem::Sod, true);
     check_runs(&data("toro123"), Problem::Toro123, true);
     check_runs(&data("toro3"), Problem::Toro3, true);
     check_runs(&data("noh_planar"), Problem::NohPlanar, true);
+    check_runs(&data("elastic_bar"), Problem::ElasticBar, true);
 }
