@@ -74,6 +74,26 @@ impl<'a, K: Kernel> ScalarPairKernel<'a, K> {
     }
 }
 
+impl<K: Kernel> ScalarPairKernel<'_, K> {
+    /// ∇_i W̄ from both sides' f'(q): r ½(σ f'(q_i)/h_i^(d+1) + σ f'(q_j)/h_j^(d+1))/|r|,
+    /// zero for coincident particles.
+    #[inline(always)]
+    fn pair_gradient<V: Vector>(&self, i: usize, j: usize, r: V, dist: f64, df: (f64, f64)) -> V {
+        if dist == 0.0 {
+            return V::ZERO;
+        }
+        let (gi, gj) = (df.0 * self.g_norm[i], df.1 * self.g_norm[j]);
+        r * (0.5 * (gi + gj) / dist)
+    }
+
+    /// ∂W(r, h_k)/∂h at q = |r|/h_k from f(q) and f'(q), in d dimensions: with
+    /// W = σ h^(−d) f(r/h), ∂W/∂h = −σ h^(−d−1) (d f + q f').
+    #[inline(always)]
+    fn dw_dh(&self, k: usize, q: f64, f: f64, df: f64, d: f64) -> f64 {
+        -self.g_norm[k] * (d * f + q * df)
+    }
+}
+
 impl<D: Dimension, K: Kernel> PairKernel<D> for ScalarPairKernel<'_, K> {
     #[inline(always)]
     fn w(&self, i: usize, j: usize, r: D::Vector) -> f64 {
@@ -90,9 +110,11 @@ impl<D: Dimension, K: Kernel> PairKernel<D> for ScalarPairKernel<'_, K> {
         if dist == 0.0 {
             return D::Vector::ZERO;
         }
-        let gi = self.kernel.df(dist * self.inv_h[i]) * self.g_norm[i];
-        let gj = self.kernel.df(dist * self.inv_h[j]) * self.g_norm[j];
-        r * (0.5 * (gi + gj) / dist)
+        let df = (
+            self.kernel.df(dist * self.inv_h[i]),
+            self.kernel.df(dist * self.inv_h[j]),
+        );
+        self.pair_gradient(i, j, r, dist, df)
     }
     #[inline(always)]
     fn h(&self, i: usize) -> f64 {
@@ -104,27 +126,21 @@ impl<D: Dimension, K: Kernel> PairKernel<D> for ScalarPairKernel<'_, K> {
     }
     #[inline(always)]
     fn dw_dh_own_at(&self, i: usize, _r: D::Vector, dist: f64) -> f64 {
-        // W = σ h^(−d) f(r/h): ∂W/∂h = −σ h^(−d−1) (d f + q f').
         let q = dist * self.inv_h[i];
-        let d = D::DIM as f64;
-        -self.g_norm[i] * (d * self.kernel.f(q) + q * self.kernel.df(q))
+        self.dw_dh(i, q, self.kernel.f(q), self.kernel.df(q), D::DIM as f64)
     }
     #[inline(always)]
     fn grad_and_dw_dh(&self, i: usize, j: usize, r: D::Vector, dist: f64) -> (D::Vector, f64, f64) {
-        // Each side's kernel and its derivative once, in the expressions of grad_at and
+        // Each side's kernel and its derivative once, through the helpers of grad_at and
         // dw_dh_own_at, so the numbers are theirs to the bit.
         let d = D::DIM as f64;
         let (qi, qj) = (dist * self.inv_h[i], dist * self.inv_h[j]);
         let (dfi, dfj) = (self.kernel.df(qi), self.kernel.df(qj));
-        let dw_dh_i = -self.g_norm[i] * (d * self.kernel.f(qi) + qi * dfi);
-        let dw_dh_j = -self.g_norm[j] * (d * self.kernel.f(qj) + qj * dfj);
-        let grad = if dist == 0.0 {
-            D::Vector::ZERO
-        } else {
-            let (gi, gj) = (dfi * self.g_norm[i], dfj * self.g_norm[j]);
-            r * (0.5 * (gi + gj) / dist)
-        };
-        (grad, dw_dh_i, dw_dh_j)
+        (
+            self.pair_gradient(i, j, r, dist, (dfi, dfj)),
+            self.dw_dh(i, qi, self.kernel.f(qi), dfi, d),
+            self.dw_dh(j, qj, self.kernel.f(qj), dfj, d),
+        )
     }
 }
 
