@@ -63,7 +63,7 @@ pub(crate) fn check_positive(values: &[(&'static str, f64)]) -> Result<(), Exact
 /// Errors from the impact diagnostics (particle views, ejecta, β, crater, damage, melt).
 ///
 /// Bad input is a value naming the particle and the field, never a panic
-/// (docs/architecture.md, "Errors are values").
+/// (docs/architecture.md, "Conventions").
 #[derive(Debug, Error, Clone, PartialEq)]
 pub enum ImpactError {
     /// A per-particle array does not have one entry per particle.

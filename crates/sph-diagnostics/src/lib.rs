@@ -34,7 +34,6 @@
 //! None.
 
 pub mod axis_depth;
-pub mod base64;
 pub mod beta;
 pub mod crater;
 pub mod crater_options;

@@ -18,8 +18,10 @@
 //! # Ok::<(), std::io::Error>(())
 //! ```
 
-use crate::base64::Base64Writer;
 use crate::xml::escape_attribute;
+use base64::engine::GeneralPurpose;
+use base64::engine::general_purpose::STANDARD;
+use base64::write::EncoderWriter;
 use std::fs::File;
 use std::io::{self, BufWriter, Write};
 use std::path::Path;
@@ -245,7 +247,7 @@ fn raw_array<W: Write>(
     ty: &str,
     components: usize,
     bytes: usize,
-    values: impl FnOnce(&mut Base64Writer<&mut W>) -> io::Result<()>,
+    values: impl FnOnce(&mut EncoderWriter<'_, GeneralPurpose, &mut W>) -> io::Result<()>,
 ) -> io::Result<()> {
     write!(
         w,
@@ -253,9 +255,11 @@ fn raw_array<W: Write>(
          format=\"binary\">\n          ",
         escape_attribute(name)
     )?;
-    let mut s = Base64Writer::new(&mut *w);
-    s.write_all(&(bytes as u64).to_le_bytes())?;
-    values(&mut s)?;
-    s.finish()?;
+    {
+        let mut s = EncoderWriter::new(&mut *w, &STANDARD);
+        s.write_all(&(bytes as u64).to_le_bytes())?;
+        values(&mut s)?;
+        s.finish()?;
+    }
     writeln!(w, "\n        </DataArray>")
 }

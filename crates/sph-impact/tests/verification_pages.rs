@@ -28,6 +28,10 @@ struct Run {
 #[derive(Debug, Deserialize)]
 struct Data {
     problem: String,
+    /// `rz` for a problem's axisymmetric form, `rings` for the Taylor rod placed as
+    /// revolved rings (the CLI's `--geometry`); absent for the problem's own geometry.
+    #[serde(default)]
+    geometry: Option<String>,
     tolerance: BTreeMap<String, f64>,
     run: Vec<Run>,
     #[serde(default)]
@@ -89,9 +93,13 @@ fn column_table(d: &Data) -> String {
 
 /// The checks of one page: every value has a tolerance, the page shows `table`, and the
 /// code reproduces the tested runs.
-fn check_problem(name: &str, problem: Problem, table: impl Fn(&Data) -> String) {
+fn check_problem(name: &str, page: &str, problem: Problem, table: impl Fn(&Data) -> String) {
     let d = data(name);
-    assert_eq!(d.problem, name);
+    assert_eq!(
+        d.problem.replace('_', "-"),
+        problem.name(),
+        "{name}: problem"
+    );
     for r in &d.run {
         for key in r.values.keys() {
             assert!(
@@ -100,8 +108,8 @@ fn check_problem(name: &str, problem: Problem, table: impl Fn(&Data) -> String) 
             );
         }
     }
-    check_page(name, &table(&d));
-    check_runs(&d, problem, false);
+    check_page(page, &table(&d));
+    check_runs(name, &d, problem, false);
 }
 
 fn data(name: &str) -> Data {
@@ -148,21 +156,25 @@ fn riemann_table(d: &Data) -> String {
 }
 
 /// Runs the data file's runs (those `tested`, or all) and compares every value.
-fn check_runs(d: &Data, problem: Problem, all: bool) {
+fn check_runs(name: &str, d: &Data, problem: Problem, all: bool) {
     for r in d.run.iter().filter(|r| all || r.tested) {
-        let o = problem.run(Some(r.resolution)).unwrap();
+        let n = Some(r.resolution);
+        let o = match d.geometry.as_deref() {
+            None => problem.run(n),
+            Some("rz") => problem.run_rz(n, problem.default_scheme()),
+            Some("rings") => problem.run_rings(n, problem.default_scheme()),
+            Some(g) => panic!("{name}: unknown geometry {g}"),
+        }
+        .unwrap();
         for (key, expected) in &r.values {
             let tolerance = d.tolerance[key];
-            let got = o
-                .get(key)
-                .unwrap_or_else(|| panic!("{}: no key {key}", d.problem));
+            let got = o.get(key).unwrap_or_else(|| panic!("{name}: no key {key}"));
             assert!(
                 (got - expected).abs() <= tolerance,
-                "{} at {}: {key} = {got}, the data file has {expected} (± {tolerance}): \
-                 re-measure docs/verification/data/{}.toml",
-                d.problem,
+                "{name} at {}: {key} = {got}, the data file has {expected} (± {tolerance}): \
+                 re-measure docs/verification/data/{name}.toml \
+                 (docs/scripts/remeasure_verification.py)",
                 r.resolution,
-                d.problem
             );
         }
     }
@@ -176,39 +188,70 @@ fn check_page(name: &str, table: &str) {
     );
 }
 
-/// The pages: data file (and page) name, the problem, how its table is made. The runs
-/// of the last four are slow (the HEL impact 17 s, the spinning disc 6.5 s, the contact
-/// with its 3-D sphere about 4 min, the tensile bar 27 s in release): they are marked
-/// `tested = false` and compared only by the ignored test; their targets are also
-/// checked by tests/solver.rs and tests/solid.rs.
+/// The data files: data file name, the page that shows its table, the problem, how the
+/// table is made. The runs marked `tested = false` in a data file are slow (seconds to
+/// minutes in release: the HEL impact, the spinning disc, the contact with its 3-D
+/// sphere, the tensile bar, the finer Sedov and Noh grids); the ignored test runs them. Their targets are also checked by
+/// tests/solver.rs and tests/solid.rs.
 type Table = fn(&Data) -> String;
-const PAGES: [(&str, Problem, Table); 9] = [
-    ("sod", Problem::Sod, riemann_table),
-    ("toro123", Problem::Toro123, column_table),
-    ("toro3", Problem::Toro3, column_table),
-    ("noh_planar", Problem::NohPlanar, column_table),
-    ("elastic_bar", Problem::ElasticBar, column_table),
-    ("hel_impact", Problem::HelImpact, column_table),
-    ("spin", Problem::Spin, column_table),
-    ("contact", Problem::Contact, column_table),
-    ("tensile_bar", Problem::TensileBar, column_table),
+const PAGES: [(&str, &str, Problem, Table); 15] = [
+    ("sod", "sod", Problem::Sod, riemann_table),
+    ("toro123", "toro123", Problem::Toro123, column_table),
+    ("toro3", "toro3", Problem::Toro3, column_table),
+    ("noh_planar", "noh_planar", Problem::NohPlanar, column_table),
+    (
+        "noh_cylindrical",
+        "noh_cylindrical",
+        Problem::NohCylindrical,
+        column_table,
+    ),
+    (
+        "noh_spherical",
+        "noh_spherical",
+        Problem::NohSpherical,
+        column_table,
+    ),
+    (
+        "noh_spherical_rz",
+        "noh_spherical_rz",
+        Problem::NohSpherical,
+        column_table,
+    ),
+    ("sedov_2d", "sedov_2d", Problem::Sedov2d, column_table),
+    ("sedov_3d", "sedov_3d", Problem::Sedov3d, column_table),
+    ("sedov_3d_rz", "sedov_3d_rz", Problem::Sedov3d, column_table),
+    (
+        "elastic_bar",
+        "elastic_bar",
+        Problem::ElasticBar,
+        column_table,
+    ),
+    ("hel_impact", "hel_impact", Problem::HelImpact, column_table),
+    ("spin", "spin", Problem::Spin, column_table),
+    ("contact", "contact", Problem::Contact, column_table),
+    (
+        "tensile_bar",
+        "tensile_bar",
+        Problem::TensileBar,
+        column_table,
+    ),
 ];
 
 #[test]
 fn every_page_shows_its_data_and_the_code_reproduces_the_tested_runs() {
-    for (name, problem, table) in PAGES {
-        check_problem(name, problem, table);
+    for (name, page, problem, table) in PAGES {
+        check_problem(name, page, problem, table);
     }
 }
 
-/// Every data file lists a page in the index, and every page has a data file here.
+/// Every page is in the index, and every data file here has its entry in PAGES.
 #[test]
 fn the_index_lists_every_page() {
     let index = std::fs::read_to_string(docs().join("README.md")).unwrap();
-    for (name, _, _) in PAGES {
+    for (_, page, _, _) in PAGES {
         assert!(
-            index.contains(&format!("]({name}.md)")),
-            "README.md lacks {name}"
+            index.contains(&format!("]({page}.md)")),
+            "README.md lacks {page}"
         );
     }
     let files = std::fs::read_dir(docs().join("data")).unwrap().count();
@@ -216,9 +259,9 @@ fn the_index_lists_every_page() {
 }
 
 #[test]
-#[ignore = "every run of every data file, the slow ones too: about 5 min in release; cargo test -p sph-impact --release --test verification_pages -- --ignored"]
+#[ignore = "every run of every data file, the slow ones too: about 30 min in release; cargo test -p sph-impact --release --test verification_pages -- --ignored"]
 fn every_resolution_of_the_data_files() {
-    for (name, problem, _) in PAGES {
-        check_runs(&data(name), problem, true);
+    for (name, _, problem, _) in PAGES {
+        check_runs(name, &data(name), problem, true);
     }
 }

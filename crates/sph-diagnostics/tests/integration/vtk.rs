@@ -1,8 +1,9 @@
 //! VTU and PVD writers: files are written, read back, checked for well-formed structure
 //! (balanced tags, no XML crate) and their base64 arrays decoded to the values written.
 
+use base64::Engine;
+use base64::engine::general_purpose::STANDARD;
 use proptest::prelude::*;
-use sph_diagnostics::base64::decode;
 use sph_diagnostics::{Pvd, VtuWriter};
 use std::path::PathBuf;
 
@@ -56,7 +57,7 @@ fn array(xml: &str, name: &str) -> (String, Vec<u8>) {
     let open = xml[..at].rfind('<').unwrap();
     let close = at + xml[at..].find('>').unwrap();
     let end = close + xml[close..].find("</DataArray>").unwrap();
-    let bytes = decode(&xml[close + 1..end]).unwrap();
+    let bytes = STANDARD.decode(xml[close + 1..end].trim()).unwrap();
     let (header, data) = bytes.split_at(8);
     assert_eq!(
         u64::from_le_bytes(header.try_into().unwrap()) as usize,
