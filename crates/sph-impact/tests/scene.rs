@@ -339,6 +339,7 @@ fn bundled_scenes_round_trip() {
         "basalt_3.9kms_rz.toml",
         "basalt_3.47kms_rz.toml",
         "basalt_2.3kms_rz.toml",
+        "basalt_3.9kms_quarter.toml",
         "smoke_rz.toml",
     ] {
         let path = scene_file(name);
@@ -365,6 +366,18 @@ fn bundled_scenes_round_trip() {
                 assert_eq!(scene.geometry, GeometryKind::Rz);
                 assert_eq!(s.geometry, sph_impact::Geometry::Axisymmetric);
                 // Ejecta 20 mm up fly on (docs/validation.md, "Free flight").
+                assert_eq!(s.free_flight_above, Some(0.02));
+            }
+            if let Some(three_d) = name.strip_suffix("_quarter.toml") {
+                // The 3-D scene's bodies placed as revolved rings, in the quarter.
+                let other = Scene::from_toml_file(scene_file(&format!("{three_d}.toml"))).unwrap();
+                for (a, b) in scene.bodies.iter().zip(&other.bodies) {
+                    assert_eq!(
+                        (&a.name, &a.shape, &a.material, a.velocity),
+                        (&b.name, &b.shape, &b.material, b.velocity)
+                    );
+                }
+                assert_eq!(scene.geometry, GeometryKind::ThreeDQuarter);
                 assert_eq!(s.free_flight_above, Some(0.02));
             }
             assert_eq!(s.artificial_stress.epsilon, 0.2);
