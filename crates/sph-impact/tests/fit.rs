@@ -1,7 +1,7 @@
 //! `sph-impact fit`: the inverse search finds a parameter that a metric determines, keeps
 //! every run inside the constraints, and resumes to the same search.
 
-use sph_impact::study::{Fit, PointStatus, Study, StudyOptions, run_fit, run_study};
+use sph_impact::study::{Fit, PointStatus, Study, StudyOptions, run_fit, run_fit_with, run_study};
 use std::path::{Path, PathBuf};
 
 fn scenes() -> PathBuf {
@@ -70,6 +70,41 @@ min = 8.722e6
 max = 10.878e6
 "#
     )
+}
+
+#[test]
+fn a_fit_with_the_users_own_objective_records_it_and_finds_the_speed() {
+    let target = kinetic_at(-3500.0);
+    let fit = Fit::from_toml_str(&fit_text(target, 24), "fit.toml", &scenes()).unwrap();
+    let dir = fresh("fit_own_objective");
+    // Not the default squared relative error: the absolute one.
+    let own = |m: &[f64]| (m[0] / target - 1.0).abs();
+    let report = run_fit_with(&fit, &dir, &quiet(), &own).unwrap();
+    for e in &report.runs {
+        if e.status == PointStatus::Done {
+            assert_eq!(e.objective, own(&e.metrics[..1]), "run {}", e.index);
+        } else {
+            assert!(e.objective.is_nan(), "run {}", e.index);
+        }
+    }
+    let best = &report.runs[report.best.unwrap()];
+    assert!(
+        (best.values[0] / -3500.0 - 1.0).abs() < 0.01,
+        "{:?} after {} runs",
+        best.values,
+        report.runs.len()
+    );
+    // fit.csv's last column is this objective, not the default squared error.
+    let csv = std::fs::read_to_string(dir.join("fit.csv")).unwrap();
+    let rows: Vec<&str> = csv.lines().skip(1).collect();
+    assert_eq!(rows.len(), report.runs.len());
+    for (row, e) in rows.iter().zip(&report.runs) {
+        let last: f64 = row.rsplit(',').next().unwrap().parse().unwrap();
+        assert!(
+            last == e.objective || (last.is_nan() && e.objective.is_nan()),
+            "{row}"
+        );
+    }
 }
 
 #[test]

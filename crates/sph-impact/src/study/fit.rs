@@ -4,7 +4,8 @@
 //! of the measured 9.8 MPa, as the study required).
 //!
 //! The search runs in the unit cube: each free parameter maps [0, 1] onto its bounds,
-//! linearly or logarithmically. The objective is Σ w (y − t)²/t² over the targets. A point
+//! linearly or logarithmically. The objective is Σ w (y − t)²/t² over the targets, or a
+//! function of the target metrics written in Rust ([`run_fit_with`]). A point
 //! outside the bounds or against a constraint is not run: its objective is a penalty that
 //! grows with the violation, so the simplex turns back. A run that fails counts as a large
 //! objective and is recorded.
@@ -384,9 +385,15 @@ pub struct FitReport {
     pub ended: String,
 }
 
+/// A fit's objective written in Rust: the value to minimise, from one finished run's
+/// target metrics in the order of [`Fit::targets`]. It must be deterministic (a resumed
+/// fit replays the search from the stored runs).
+pub type Objective<'a> = dyn Fn(&[f64]) -> f64 + 'a;
+
 /// The search's state behind argmin's `&self` cost function.
 struct Search<'a> {
     fit: &'a Fit,
+    objective: &'a Objective<'a>,
     dir: &'a Path,
     options: &'a StudyOptions,
     runs: RefCell<Vec<Evaluation>>,
@@ -425,7 +432,12 @@ impl Search<'_> {
         if status == PointStatus::Done {
             metrics = metric::read_point(&pdir, self.fit.targets.iter().map(|t| &t.metric))?.0;
         }
-        let objective = self.fit.objective(&metrics);
+        // A run that did not finish has no metrics: NaN, whatever the objective.
+        let objective = if status == PointStatus::Done {
+            (self.objective)(&metrics)
+        } else {
+            f64::NAN
+        };
         metrics.extend(self.fit.study.derived_values(&point));
         Ok(Some(Evaluation {
             index,
@@ -525,10 +537,25 @@ impl argmin::core::CostFunction for Problem<'_, '_> {
 /// `fit.md`, and returns the report. `options.jobs` is not used (the search is
 /// sequential); `options.stop` stops it at a checkpoint, which the next call resumes.
 pub fn run_fit(fit: &Fit, dir: &Path, options: &StudyOptions) -> Result<FitReport, StudyError> {
+    run_fit_with(fit, dir, options, &|metrics: &[f64]| fit.objective(metrics))
+}
+
+/// [`run_fit`] with the user's own objective instead of Σ w (y − t)²/t²: `objective`
+/// receives each finished run's target metrics in the order of [`Fit::targets`] (whose
+/// `value` and `weight` it may ignore) and returns the value to minimise. A value that is
+/// not finite counts as a failed run. The files and the report are those of `run_fit`,
+/// with this objective in their `objective` column.
+pub fn run_fit_with(
+    fit: &Fit,
+    dir: &Path,
+    options: &StudyOptions,
+    objective: &Objective<'_>,
+) -> Result<FitReport, StudyError> {
     let search_dir = dir.join("search");
     std::fs::create_dir_all(&search_dir).map_err(|e| StudyError::io(&search_dir, e))?;
     let search = Search {
         fit,
+        objective,
         dir: &search_dir,
         options,
         runs: RefCell::new(Vec::new()),

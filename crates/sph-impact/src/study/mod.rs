@@ -43,7 +43,9 @@ mod table;
 pub use axis::{Axis, Point, Range, Spacing, cell, points};
 pub use derived::{Derived, StaticStrength};
 pub use error::StudyError;
-pub use fit::{Constraint, Evaluation, Fit, FitReport, Free, Target, run_fit};
+pub use fit::{
+    Constraint, Evaluation, Fit, FitReport, Free, Objective, Target, run_fit, run_fit_with,
+};
 pub use runner::{StudyOptions, point_dir, run_study};
 pub use slurm::emit_slurm;
 pub use study::{Reference, Study};
