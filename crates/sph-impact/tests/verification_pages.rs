@@ -194,7 +194,7 @@ fn check_page(name: &str, table: &str) {
 /// sphere, the tensile bar, the finer Sedov and Noh grids); the ignored test runs them. Their targets are also checked by
 /// tests/solver.rs and tests/solid.rs.
 type Table = fn(&Data) -> String;
-const PAGES: [(&str, &str, Problem, Table); 17] = [
+const PAGES: [(&str, &str, Problem, Table); 19] = [
     ("sod", "sod", Problem::Sod, riemann_table),
     ("toro123", "toro123", Problem::Toro123, column_table),
     ("toro3", "toro3", Problem::Toro3, column_table),
@@ -237,6 +237,8 @@ const PAGES: [(&str, &str, Problem, Table); 17] = [
     ),
     ("rings", "rings", Problem::Rings, column_table),
     ("taylor_rz", "taylor_rz", Problem::Taylor, column_table),
+    ("taylor", "taylor", Problem::Taylor, column_table),
+    ("taylor_rings", "taylor", Problem::Taylor, column_table),
 ];
 
 #[test]
@@ -261,7 +263,7 @@ fn the_index_lists_every_page() {
 }
 
 #[test]
-#[ignore = "every run of every data file, the slow ones too: about 30 min in release; cargo test -p sph-impact --release --test verification_pages -- --ignored"]
+#[ignore = "every run of every data file, the slow ones too: about 1.5 h in release; cargo test -p sph-impact --release --test verification_pages -- --ignored"]
 fn every_resolution_of_the_data_files() {
     for (name, _, problem, _) in PAGES {
         check_runs(name, &data(name), problem, true);
