@@ -194,7 +194,7 @@ fn check_page(name: &str, table: &str) {
 /// sphere, the tensile bar, the finer Sedov and Noh grids); the ignored test runs them. Their targets are also checked by
 /// tests/solver.rs and tests/solid.rs.
 type Table = fn(&Data) -> String;
-const PAGES: [(&str, &str, Problem, Table); 19] = [
+const PAGES: [(&str, &str, Problem, Table); 20] = [
     ("sod", "sod", Problem::Sod, riemann_table),
     ("toro123", "toro123", Problem::Toro123, column_table),
     ("toro3", "toro3", Problem::Toro3, column_table),
@@ -239,6 +239,7 @@ const PAGES: [(&str, &str, Problem, Table); 19] = [
     ("taylor_rz", "taylor_rz", Problem::Taylor, column_table),
     ("taylor", "taylor", Problem::Taylor, column_table),
     ("taylor_rings", "taylor", Problem::Taylor, column_table),
+    ("plate", "plate", Problem::Plate, column_table),
 ];
 
 #[test]
