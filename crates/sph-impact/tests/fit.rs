@@ -22,13 +22,15 @@ fn quiet() -> StudyOptions {
 }
 
 /// The initial kinetic energy of the RZ smoke scene with the projectile at `speed`.
-fn kinetic_at(speed: f64) -> f64 {
+/// The initial kinetic energy at `speed`, from a one-point study in its own directory
+/// (`dir`: tests that run side by side must not share one).
+fn kinetic_at(speed: f64, dir: &str) -> f64 {
     let text = format!(
         "scene = \"smoke_rz.toml\"\nend_time = 1e-8\nmetrics = [\"initial.kinetic\"]\n\
          [[parameter]]\npath = \"body.projectile.velocity[2]\"\nvalues = [{speed:?}]\n"
     );
     let s = Study::from_toml_str(&text, "ke.toml", &scenes()).unwrap();
-    let t = run_study(&s, &fresh("fit_reference"), &quiet()).unwrap();
+    let t = run_study(&s, &fresh(dir), &quiet()).unwrap();
     t.rows[0].metrics[0]
 }
 
@@ -74,7 +76,7 @@ max = 10.878e6
 
 #[test]
 fn a_fit_with_the_users_own_objective_records_it_and_finds_the_speed() {
-    let target = kinetic_at(-3500.0);
+    let target = kinetic_at(-3500.0, "fit_reference_own_objective");
     let fit = Fit::from_toml_str(&fit_text(target, 24), "fit.toml", &scenes()).unwrap();
     let dir = fresh("fit_own_objective");
     // Not the default squared relative error: the absolute one.
@@ -109,7 +111,7 @@ fn a_fit_with_the_users_own_objective_records_it_and_finds_the_speed() {
 
 #[test]
 fn a_fit_finds_the_speed_inside_the_constraint_and_resumes_to_the_same_search() {
-    let target = kinetic_at(-3500.0);
+    let target = kinetic_at(-3500.0, "fit_reference");
     let fit = Fit::from_toml_str(&fit_text(target, 24), "fit.toml", &scenes()).unwrap();
     let dir = fresh("fit_whole");
     let report = run_fit(&fit, &dir, &quiet()).unwrap();
