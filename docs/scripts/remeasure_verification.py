@@ -14,6 +14,7 @@ tolerances, the columns and each run's `tested` flag are kept. Then
 
 import argparse
 import json
+import math
 import re
 import subprocess
 import sys
@@ -38,6 +39,11 @@ def number(key, x):
     if key in ("steps", "particles") or (float(x).is_integer() and abs(x) < 1e15):
         return str(int(x))
     return f"{x:.5g}".replace("e-0", "e-").replace("e+0", "e")
+
+
+def rounding(x):
+    """Half a unit of the fifth significant digit: how far `number` may move a value."""
+    return 0.0 if x == 0 else 0.5 * 10 ** (math.floor(math.log10(abs(x))) - 4)
 
 
 def main():
@@ -65,6 +71,11 @@ def main():
             sys.exit(f"{args.data}: the output at {n} has no key {', '.join(missing)}")
         lines = [f"resolution = {n}", f"tested = {'true' if run['tested'] else 'false'}"]
         lines += [f"{k} = {number(k, got[k])}" for k in keys]
+        for k in keys:
+            tol = data["tolerance"][k]
+            if 0 < tol < rounding(got[k]) and not float(got[k]).is_integer():
+                print(f"{args.data}: {k} = {got[k]} at {n} is stored to ±{rounding(got[k]):.1e},"
+                      f" more than its tolerance {tol:.1e}: raise the tolerance", file=sys.stderr)
         out.append("[[run]]\n" + "\n".join(lines) + "\n\n")
     open(args.data, "w", encoding="utf-8").write("".join(out).rstrip("\n") + "\n")
 
