@@ -67,9 +67,11 @@ fn main() -> Result<(), Box<dyn Error>> {
             metric: "initial.kinetic".into(),
             value: target,
             weight: 1.0,
+            case: None,
         }],
         constraints: Vec::new(),
         budget: 16,
+        cases: Vec::new(),
     };
     fit.check()?;
     let report = run_fit(&fit, &out.join("fit"), &options)?;

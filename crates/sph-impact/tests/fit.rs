@@ -190,7 +190,26 @@ fn bad_fit_files_name_the_key() {
         ),
         (
             good.replace("metric = \"initial.kinetic\"", "metric = \"kinetic\""),
-            "`metrics[0]`: `kinetic` is not a key of summary.json",
+            "`target[0].metric`: `kinetic` is not a key of summary.json",
+        ),
+        (
+            format!("{good}\n[[target]]\nmetric = \"beta\"\nvalue = 2.0\ncase = \"slow\"\n"),
+            "`target[1].case`: `slow` is not the name of a `[[case]]`",
+        ),
+        (
+            format!("{good}\n[[case]]\nname = \"slow\"\nscene = \"smoke_rz.toml\"\n"),
+            "`case[0]`: no `[[target]]` names case `slow`: its runs would count for nothing",
+        ),
+        (
+            format!(
+                "{good}\n[[case]]\nname = \"a/b\"\nscene = \"smoke_rz.toml\"\n\
+                 [[target]]\nmetric = \"beta\"\nvalue = 2.0\ncase = \"a/b\"\n"
+            ),
+            "`case[0].name`: `a/b` cannot name a directory",
+        ),
+        (
+            format!("{good}\n[[case]]\nname = \"slow\"\nscene = \"missing.toml\"\n"),
+            "`case[0].scene`:",
         ),
     ];
     for (text, expected) in cases {
@@ -199,4 +218,144 @@ fn bad_fit_files_name_the_key() {
         assert!(line.starts_with("fit.toml:"), "{line}");
         assert!(line.contains(expected), "{line}\n expected: {expected}");
     }
+}
+
+/// The fit of a speed to two scenes at once, with a third held out: the squared relative
+/// errors of E(v) against E(−3300 m/s) in the fit's own scene and against E(−3700 m/s) in
+/// case `fast` are least at v*² = (1/a² + 1/b²)/(1/a⁴ + 1/b⁴) (a = 3300, b = 3700, since
+/// E ∝ v²), which neither target alone gives; case `held` is run once at the best point
+/// and compared with E(−3500 m/s).
+fn cases_text(e: impl Fn(f64) -> f64, budget: usize) -> String {
+    format!(
+        r#"
+scene = "smoke_rz.toml"
+end_time = 1e-8
+budget = {budget}
+
+[[free]]
+path = "body.projectile.velocity[2]"
+min = -4500.0
+max = -3000.0
+start = -4200.0
+
+[[case]]
+name = "fast"
+scene = "smoke_rz.toml"
+
+[[case]]
+name = "held"
+scene = "smoke_rz.toml"
+hold_out = true
+
+[[target]]
+metric = "initial.kinetic"
+value = {:e}
+
+[[target]]
+metric = "initial.kinetic"
+value = {:e}
+case = "fast"
+
+[[target]]
+metric = "initial.kinetic"
+value = {:e}
+case = "held"
+"#,
+        e(-3300.0),
+        e(-3700.0),
+        e(-3500.0)
+    )
+}
+
+#[test]
+fn a_fit_over_two_scenes_finds_their_compromise_and_reports_the_hold_out() {
+    let e3500 = kinetic_at(-3500.0, "fit_cases_reference");
+    let e = |v: f64| e3500 * (v / 3500.0).powi(2);
+    let fit = Fit::from_toml_str(&cases_text(e, 14), "fit.toml", &scenes()).unwrap();
+    assert_eq!(fit.fitted_targets().count(), 2);
+    let dir = fresh("fit_cases");
+    let report = run_fit(&fit, &dir, &quiet()).unwrap();
+    let (a, b) = (3300.0f64.powi(2), 3700.0f64.powi(2));
+    let v_star = -((1.0 / a + 1.0 / b) / (1.0 / (a * a) + 1.0 / (b * b))).sqrt();
+    let best = &report.runs[report.best.unwrap()];
+    assert!(
+        (best.values[0] / v_star - 1.0).abs() < 0.005,
+        "best {:?}, sought {v_star} after {} runs",
+        best.values,
+        report.runs.len()
+    );
+    // Each run has both fitted targets' metrics, each from its own scene's run.
+    for r in report.runs.iter().filter(|r| r.status == PointStatus::Done) {
+        assert_eq!(r.metrics.len(), 2);
+        let expected = e(r.values[0]);
+        for m in &r.metrics {
+            assert!(
+                (m / expected - 1.0).abs() < 1e-9,
+                "run {}: {m} against {expected}",
+                r.index
+            );
+        }
+        let case_run = dir.join(format!(
+            "search/cases/fast/points/{:04}/run/summary.json",
+            r.index
+        ));
+        assert!(case_run.exists(), "{}", case_run.display());
+    }
+    // The hold-out case ran once, at the best point, and is compared, not fitted.
+    assert_eq!(report.hold_out.len(), 1);
+    let h = &report.hold_out[0];
+    assert_eq!((h.case.as_str(), h.status), ("held", PointStatus::Done));
+    assert!(
+        (h.metrics[0] / e(best.values[0]) - 1.0).abs() < 1e-9,
+        "{h:?}"
+    );
+    assert!(!dir.join("search/cases/held").exists());
+    let md = std::fs::read_to_string(dir.join("fit.md")).unwrap();
+    assert!(
+        md.contains("Hold-out cases") && md.contains("| held | done |"),
+        "{md}"
+    );
+    let csv = std::fs::read_to_string(dir.join("fit.csv")).unwrap();
+    assert!(
+        csv.starts_with("run,body.projectile.velocity[2],status,initial.kinetic,initial.kinetic@fast,objective\n"),
+        "{csv}"
+    );
+
+    // Cut short, then continued with the cases run side by side: the same search.
+    let pieces = fresh("fit_cases_pieces");
+    let short = Fit::from_toml_str(&cases_text(e, 3), "fit.toml", &scenes()).unwrap();
+    run_fit(&short, &pieces, &quiet()).unwrap();
+    let two = StudyOptions { jobs: 2, ..quiet() };
+    run_fit(&fit, &pieces, &two).unwrap();
+    assert_eq!(
+        std::fs::read_to_string(pieces.join("fit.csv")).unwrap(),
+        csv
+    );
+}
+
+#[test]
+fn every_bundled_study_and_fit_file_reads_and_checks() {
+    let dir = scenes().join("../studies");
+    let mut read = 0;
+    for entry in std::fs::read_dir(&dir).unwrap() {
+        let path = entry.unwrap().path();
+        if path.extension().is_none_or(|e| e != "toml") {
+            continue;
+        }
+        let text = std::fs::read_to_string(&path).unwrap();
+        let is_fit = text.lines().any(|l| l.starts_with("budget"));
+        let result = if is_fit {
+            Fit::from_toml_file(&path).map(|_| ())
+        } else {
+            Study::from_toml_file(&path).map(|_| ())
+        };
+        assert!(
+            result.is_ok(),
+            "{}: {}",
+            path.display(),
+            result.unwrap_err()
+        );
+        read += 1;
+    }
+    assert!(read >= 5, "{read} files under {}", dir.display());
 }

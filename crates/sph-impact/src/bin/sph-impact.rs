@@ -121,6 +121,10 @@ enum Command {
         /// directory to continue a stopped fit, or one given a larger budget.
         #[arg(long)]
         out: Option<PathBuf>,
+        /// Runs at a time: the fitted cases of one point (and the hold-out cases) run side
+        /// by side, each with the fit's `threads_per_run` (default 1).
+        #[arg(long, default_value_t = 1)]
+        jobs: usize,
         /// No table on standard output.
         #[arg(long)]
         quiet: bool,
@@ -259,8 +263,14 @@ fn main() -> ExitCode {
             }
             sph_impact::cli::study(&study, out.as_deref(), &options).map(|_| ())
         }
-        Command::Fit { fit, out, quiet } => {
+        Command::Fit {
+            fit,
+            out,
+            jobs,
+            quiet,
+        } => {
             let options = sph_impact::study::StudyOptions {
+                jobs,
                 quiet,
                 ..Default::default()
             };

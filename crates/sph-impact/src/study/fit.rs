@@ -10,12 +10,19 @@
 //! grows with the violation, so the simplex turns back. A run that fails counts as a large
 //! objective and is recorded.
 //!
-//! Every run is a point of the fit's directory (`search/points/NNNN/`, as a study's), in
-//! the order the search asks for them. The search is deterministic, so a stopped or killed
+//! A fit may span several scenes, its **cases** (the same impact at several speeds): the
+//! free parameters are set in each, a target names the case whose run it is read from,
+//! and each point of the search runs every fitted case. A case marked `hold_out` is not
+//! fitted: it runs once, at the best point, and its targets are compared, not sought
+//! (the study's Table 2 fitted at 3.9 km/s and checked at 2.3 and 3.47 km/s).
+//!
+//! Every run is a point of the fit's directory (`search/points/NNNN/`, as a study's; a
+//! case's under `search/cases/NAME/points/NNNN/`), in the order the search asks for them. The search is deterministic, so a stopped or killed
 //! fit run again replays it: the runs already done are read back and the search goes on
 //! from there; a larger `budget` continues a finished one. After the search, one run per
 //! free parameter a small step from the best point (`sensitivity/run-BEST/points/K/`) gives the
-//! local sensitivity of each target metric to each parameter.
+//! local sensitivity of each target metric to each parameter; then the hold-out cases run
+//! at the best point (`hold_out/run-BEST/cases/NAME/points/0000/`).
 
 use crate::scene::Scene;
 use crate::study::axis::{Point, Spacing};
@@ -89,9 +96,37 @@ pub struct Target {
     pub metric: String,
     /// The value sought (non-zero).
     pub value: f64,
-    /// Weight in the objective (default 1).
+    /// Weight in the objective (default 1; not used for a hold-out case's target).
     #[serde(default = "one")]
     pub weight: f64,
+    /// The [`Case`] whose run the metric is read from, by name; `None` (the default):
+    /// the fit's own scene.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub case: Option<String>,
+}
+
+impl Target {
+    /// Its column in fit.csv and fit.md: the metric, followed by `@case` for a case's.
+    pub fn column(&self) -> String {
+        match &self.case {
+            Some(c) => format!("{}@{c}", self.metric),
+            None => self.metric.clone(),
+        }
+    }
+}
+
+/// Another scene of a fit, run with the same free parameters: the same impact at another
+/// speed, say. Its study holds its scene and the fit's run options (resolution scale,
+/// end time, threads per run).
+#[derive(Clone, Debug)]
+pub struct Case {
+    /// Its name, as targets give it (letters, digits, `-`, `_`, `.`: it names the case's
+    /// directory).
+    pub name: String,
+    /// Its scene and run options.
+    pub study: Study,
+    /// Not fitted: run once at the best point, its targets compared with the run.
+    pub hold_out: bool,
 }
 
 fn one() -> f64 {
@@ -126,10 +161,11 @@ impl Constraint {
 
 /// A fit: the base scene and run options (a [`Study`] without axes: its metrics are the
 /// targets' and its derived metrics those the constraints name), the free parameters,
-/// the targets, the constraints and the run budget.
+/// the targets, the constraints, the run budget and the other cases.
 #[derive(Clone, Debug)]
 pub struct Fit {
-    /// The base scene, run options and derived metrics.
+    /// The base scene, run options and derived metrics (the constraints are evaluated on
+    /// its scene).
     pub study: Study,
     /// The free parameters.
     pub free: Vec<Free>,
@@ -137,8 +173,20 @@ pub struct Fit {
     pub targets: Vec<Target>,
     /// The constraints.
     pub constraints: Vec<Constraint>,
-    /// The most runs of the search (the sensitivity runs come on top).
+    /// The most points of the search (each runs the base scene and every fitted case;
+    /// the sensitivity and hold-out runs come on top).
     pub budget: usize,
+    /// Other scenes the free parameters apply to (default none).
+    pub cases: Vec<Case>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct CaseFile {
+    name: String,
+    scene: String,
+    #[serde(default)]
+    hold_out: bool,
 }
 
 #[derive(Deserialize)]
@@ -157,6 +205,8 @@ struct FitFile {
     constraint: Vec<Constraint>,
     #[serde(default)]
     derived: Vec<Derived>,
+    #[serde(default)]
+    case: Vec<CaseFile>,
 }
 
 impl Fit {
@@ -170,35 +220,101 @@ impl Fit {
     /// its scene path is relative to).
     pub fn from_toml_str(text: &str, origin: &str, dir: &Path) -> Result<Self, StudyError> {
         let (file, map): (FitFile, _) = read_file(text, origin)?;
-        let mut study = base_study(
-            &map,
-            dir,
-            &file.scene,
-            RunSettings {
-                description: file.description,
-                resolution_scale: file.resolution_scale,
-                end_time: file.end_time,
-                threads_per_run: file.threads_per_run,
-            },
-        )?;
-        study.metrics = file.target.iter().map(|t| t.metric.clone()).collect();
+        let settings = RunSettings {
+            description: file.description,
+            resolution_scale: file.resolution_scale,
+            end_time: file.end_time,
+            threads_per_run: file.threads_per_run,
+        };
+        let mut study = base_study(&map, dir, ("scene", &file.scene), settings.clone())?;
         study.derived = file.derived;
+        let mut cases = Vec::new();
+        for (i, c) in file.case.into_iter().enumerate() {
+            let key = format!("case[{i}].scene");
+            let study = base_study(&map, dir, (&key, &c.scene), settings.clone())?;
+            cases.push(Case {
+                name: c.name,
+                study,
+                hold_out: c.hold_out,
+            });
+        }
         let fit = Fit {
             study,
             free: file.free,
             targets: file.target,
             constraints: file.constraint,
             budget: file.budget,
+            cases,
         };
         fit.check().map_err(|e| locate(&map, e))?;
         Ok(fit)
     }
 
-    /// Checks the fit: the study part (options, metrics, derived), the bounds and start of
-    /// each free parameter, the targets, the constraints, and that the start point's scene
-    /// reads and satisfies the constraints.
+    /// Checks the fit: the targets (their metrics and cases), the cases, the study part
+    /// (options, derived), the bounds and start of each free parameter, the constraints,
+    /// and that the start point's scene reads in every case and satisfies the constraints.
     pub fn check(&self) -> Result<(), StudyError> {
-        self.study.check()?;
+        for (i, t) in self.targets.iter().enumerate() {
+            metric::check_name(&t.metric)
+                .map_err(|m| StudyError::at_key(format!("target[{i}].metric"), m))?;
+            if let Some(c) = &t.case
+                && !self.cases.iter().any(|k| k.name == *c)
+            {
+                return Err(StudyError::at_key(
+                    format!("target[{i}].case"),
+                    format!("`{c}` is not the name of a `[[case]]`"),
+                ));
+            }
+        }
+        if !self.targets.iter().any(|t| t.case.is_none()) {
+            return Err(StudyError::at_key(
+                "target",
+                "give at least one target of the fit's own scene (a `[[target]]` without `case`)",
+            ));
+        }
+        self.with_metrics(&self.study, None).check()?;
+        for (i, c) in self.cases.iter().enumerate() {
+            let key = |k: &str| format!("case[{i}].{k}");
+            if c.name.is_empty()
+                || crate::study::plain_name(&c.name) != c.name
+                || c.name.chars().all(|x| x == '.')
+            {
+                return Err(StudyError::at_key(
+                    key("name"),
+                    format!(
+                        "`{}` cannot name a directory: use letters, digits, `-`, `_` and `.`",
+                        c.name
+                    ),
+                ));
+            }
+            if self.cases[..i].iter().any(|k| k.name == c.name) {
+                return Err(StudyError::at_key(
+                    key("name"),
+                    format!("`{}` names two cases", c.name),
+                ));
+            }
+            if !self
+                .targets
+                .iter()
+                .any(|t| t.case.as_ref() == Some(&c.name))
+            {
+                return Err(StudyError::at_key(
+                    format!("case[{i}]"),
+                    format!(
+                        "no `[[target]]` names case `{}`: its runs would {}",
+                        c.name,
+                        if c.hold_out {
+                            "compare nothing"
+                        } else {
+                            "count for nothing"
+                        }
+                    ),
+                ));
+            }
+            self.with_metrics(&c.study, Some(&c.name))
+                .check()
+                .map_err(|e| StudyError::at_key(format!("case[{i}]"), e.message))?;
+        }
         if self.budget < self.free.len() + 1 {
             return Err(StudyError::at_key(
                 "budget",
@@ -289,6 +405,16 @@ impl Fit {
         }
         let start = self.start();
         let point = self.point(0, &start);
+        for (i, c) in self.cases.iter().enumerate() {
+            let text = c.study.point_scene(&point)?;
+            Scene::from_toml_str(&text, &c.study.scene_origin).map_err(|mut e| {
+                e.location = None;
+                StudyError::at_key(
+                    format!("case[{i}].scene"),
+                    format!("the start point's scene is refused: {e}"),
+                )
+            })?;
+        }
         let text = self.study.point_scene(&point)?;
         let scene = Scene::from_toml_str(&text, &self.study.scene_origin).map_err(|e| {
             let mut e = e;
@@ -306,6 +432,57 @@ impl Fit {
             ));
         }
         Ok(())
+    }
+
+    /// `study` with the metrics of the targets of `case` (`None`: the fit's own scene),
+    /// each once: what its runs are read for.
+    fn with_metrics(&self, study: &Study, case: Option<&str>) -> Study {
+        let mut s = study.clone();
+        s.metrics.clear();
+        for t in self.targets.iter().filter(|t| t.case.as_deref() == case) {
+            if !s.metrics.contains(&t.metric) {
+                s.metrics.push(t.metric.clone());
+            }
+        }
+        s
+    }
+
+    /// The index in [`Fit::cases`] of the case `target` is read from (`None`: the fit's
+    /// own scene).
+    fn case_of(&self, target: &Target) -> Option<usize> {
+        target
+            .case
+            .as_ref()
+            .and_then(|c| self.cases.iter().position(|k| k.name == *c))
+    }
+
+    /// The study of `case` (`None`: the fit's own).
+    fn case_study(&self, case: Option<usize>) -> &Study {
+        case.map_or(&self.study, |c| &self.cases[c].study)
+    }
+
+    /// Where the points of `case` lie under a search's `root`: `root` for the fit's own
+    /// scene, `root/cases/NAME` for a case.
+    fn case_root(&self, root: &Path, case: Option<usize>) -> std::path::PathBuf {
+        match case {
+            None => root.to_owned(),
+            Some(c) => root.join("cases").join(&self.cases[c].name),
+        }
+    }
+
+    /// Whether `target` is sought by the search (of the fit's own scene or of a case that
+    /// is not held out).
+    fn fitted(&self, target: &Target) -> bool {
+        target
+            .case
+            .as_ref()
+            .is_none_or(|c| self.cases.iter().any(|k| k.name == *c && !k.hold_out))
+    }
+
+    /// The targets the search seeks, in file order: those whose metrics an
+    /// [`Objective`] receives.
+    pub fn fitted_targets(&self) -> impl Iterator<Item = &Target> {
+        self.targets.iter().filter(|t| self.fitted(t))
     }
 
     /// The start in unit coordinates.
@@ -346,10 +523,9 @@ impl Fit {
             .sum()
     }
 
-    /// Σ w (y − t)²/t².
+    /// Σ w (y − t)²/t² over the fitted targets.
     fn objective(&self, metrics: &[f64]) -> f64 {
-        self.targets
-            .iter()
+        self.fitted_targets()
             .zip(metrics)
             .map(|(t, y)| t.weight * ((y - t.value) / t.value).powi(2))
             .sum()
@@ -365,7 +541,7 @@ pub struct Evaluation {
     pub values: Vec<f64>,
     /// How it ended.
     pub status: PointStatus,
-    /// The target metrics, then the derived metrics.
+    /// The fitted targets' metrics ([`Fit::fitted_targets`]), then the derived metrics.
     pub metrics: Vec<f64>,
     /// The objective (NaN for a failed run).
     pub objective: f64,
@@ -383,11 +559,25 @@ pub struct FitReport {
     pub sensitivity: Vec<(Evaluation, Vec<f64>)>,
     /// Why the search ended.
     pub ended: String,
+    /// The hold-out cases' runs at the best point, in the order of [`Fit::cases`].
+    pub hold_out: Vec<HoldOut>,
 }
 
-/// A fit's objective written in Rust: the value to minimise, from one finished run's
-/// target metrics in the order of [`Fit::targets`]. It must be deterministic (a resumed
-/// fit replays the search from the stored runs).
+/// A hold-out case run at the best point.
+#[derive(Clone, Debug, Serialize)]
+pub struct HoldOut {
+    /// The case's name.
+    pub case: String,
+    /// How its run ended.
+    pub status: PointStatus,
+    /// The metrics of its targets, in the order of [`Fit::targets`] (NaN unless done).
+    pub metrics: Vec<f64>,
+}
+
+/// A fit's objective written in Rust: the value to minimise, from one finished point's
+/// fitted target metrics in the order of [`Fit::fitted_targets`] (all of [`Fit::targets`]
+/// when no case is held out). It must be deterministic (a resumed fit replays the search
+/// from the stored runs).
 pub type Objective<'a> = dyn Fn(&[f64]) -> f64 + 'a;
 
 /// The search's state behind argmin's `&self` cost function.
@@ -403,42 +593,40 @@ struct Search<'a> {
 }
 
 impl Search<'_> {
-    /// Runs (or reads back) the point at `u` as run `index` under `root`.
+    /// Runs (or reads back) the point at `u` as run `index` under `root`: the fit's own
+    /// scene and every fitted case.
     fn evaluate(
         &self,
         root: &Path,
         index: usize,
         u: &[f64],
     ) -> Result<Option<Evaluation>, StudyError> {
-        let point = self.fit.point(index, u);
-        let scene = stored_scene(&self.fit.study, &point)?;
-        let pdir = point_dir(root, index);
-        check_stored_scene(&pdir, &scene, &point).map_err(|_| {
-            StudyError::bad(format!(
-                "{}: run {index} of this directory was made for another point than the search asks for now (the fit file or its scene changed): use a new directory",
-                pdir.display()
-            ))
-        })?;
-        let done = read_record(&pdir)?.is_some_and(|r| r.status != PointStatus::Pending);
-        if !done
-            && let Outcome::Stopped =
-                run_point(&self.fit.study, root, &point, &scene, self.options)?
-        {
+        let fit = self.fit;
+        let point = fit.point(index, u);
+        let cases: Vec<Option<usize>> = std::iter::once(None)
+            .chain(
+                (0..fit.cases.len())
+                    .filter(|&c| !fit.cases[c].hold_out)
+                    .map(Some),
+            )
+            .collect();
+        let Some(status) = self.run_cases(root, &point, &cases)? else {
             return Ok(None);
+        };
+        let all = combined(&status);
+        let mut metrics = Vec::new();
+        for t in fit.fitted_targets() {
+            let c = fit.case_of(t);
+            let k = cases.iter().position(|&x| x == c).unwrap_or(0);
+            metrics.push(self.metric(root, c, index, status[k], &t.metric)?);
         }
-        let record = read_record(&pdir)?;
-        let status = record.map_or(PointStatus::Pending, |r| r.status);
-        let mut metrics = vec![f64::NAN; self.fit.targets.len()];
-        if status == PointStatus::Done {
-            metrics = metric::read_point(&pdir, self.fit.targets.iter().map(|t| &t.metric))?.0;
-        }
-        // A run that did not finish has no metrics: NaN, whatever the objective.
-        let objective = if status == PointStatus::Done {
+        // A point that did not finish has no objective, whatever its metrics.
+        let objective = if all == PointStatus::Done {
             (self.objective)(&metrics)
         } else {
             f64::NAN
         };
-        metrics.extend(self.fit.study.derived_values(&point));
+        metrics.extend(fit.study.derived_values(&point));
         Ok(Some(Evaluation {
             index,
             values: point
@@ -446,10 +634,86 @@ impl Search<'_> {
                 .iter()
                 .map(|(_, v)| v.as_float().unwrap_or(f64::NAN))
                 .collect(),
-            status,
+            status: all,
             metrics,
             objective,
         }))
+    }
+
+    /// The value of `metric` in the run of `case` at point `index` under `root`; NaN
+    /// unless that run is done.
+    fn metric(
+        &self,
+        root: &Path,
+        case: Option<usize>,
+        index: usize,
+        status: PointStatus,
+        metric: &str,
+    ) -> Result<f64, StudyError> {
+        if status != PointStatus::Done {
+            return Ok(f64::NAN);
+        }
+        let pdir = point_dir(&self.fit.case_root(root, case), index);
+        Ok(metric::read_point(&pdir, [metric])?.0[0])
+    }
+
+    /// Runs `point` in each of `cases` (`None`: the fit's own scene) whose run is not
+    /// finished, `options.jobs` at a time, and returns each one's status; `None` when a
+    /// stop request stopped one.
+    fn run_cases(
+        &self,
+        root: &Path,
+        point: &Point,
+        cases: &[Option<usize>],
+    ) -> Result<Option<Vec<PointStatus>>, StudyError> {
+        let fit = self.fit;
+        let mut pending = Vec::new();
+        for &c in cases {
+            let study = fit.case_study(c);
+            let scene = stored_scene(study, point)?;
+            let case_root = fit.case_root(root, c);
+            let pdir = point_dir(&case_root, point.index);
+            check_stored_scene(&pdir, &scene, point).map_err(|_| {
+                StudyError::bad(format!(
+                    "{}: run {} of this directory was made for another point than the search asks for now (the fit file or its scene changed): use a new directory",
+                    pdir.display(),
+                    point.index
+                ))
+            })?;
+            if !read_record(&pdir)?.is_some_and(|r| r.status != PointStatus::Pending) {
+                pending.push((study, case_root, scene));
+            }
+        }
+        let options = self.options;
+        for chunk in pending.chunks(options.jobs.max(1)) {
+            let outcomes: Vec<Result<Outcome, StudyError>> = std::thread::scope(|s| {
+                let handles: Vec<_> = chunk
+                    .iter()
+                    .map(|(study, case_root, scene)| {
+                        s.spawn(move || run_point(study, case_root, point, scene, options))
+                    })
+                    .collect();
+                handles
+                    .into_iter()
+                    .map(|h| {
+                        h.join().unwrap_or_else(|_| {
+                            Err(StudyError::failed("a case's run thread panicked"))
+                        })
+                    })
+                    .collect()
+            });
+            for o in outcomes {
+                if let Outcome::Stopped = o? {
+                    return Ok(None);
+                }
+            }
+        }
+        let mut status = Vec::new();
+        for &c in cases {
+            let pdir = point_dir(&fit.case_root(root, c), point.index);
+            status.push(read_record(&pdir)?.map_or(PointStatus::Pending, |r| r.status));
+        }
+        Ok(Some(status))
     }
 
     fn cost(&self, u: &[f64]) -> Result<f64, String> {
@@ -523,6 +787,17 @@ impl Search<'_> {
     }
 }
 
+/// A point's status from its runs': done when every run is, failed when one failed.
+fn combined(status: &[PointStatus]) -> PointStatus {
+    if status.iter().all(|&s| s == PointStatus::Done) {
+        PointStatus::Done
+    } else if status.contains(&PointStatus::Failed) {
+        PointStatus::Failed
+    } else {
+        PointStatus::Pending
+    }
+}
+
 struct Problem<'a, 'b>(&'b Search<'a>);
 
 impl argmin::core::CostFunction for Problem<'_, '_> {
@@ -534,8 +809,9 @@ impl argmin::core::CostFunction for Problem<'_, '_> {
 }
 
 /// Runs the fit into `dir` (created if needed), writes `fit.csv`, `fit.json` and
-/// `fit.md`, and returns the report. `options.jobs` is not used (the search is
-/// sequential); `options.stop` stops it at a checkpoint, which the next call resumes.
+/// `fit.md`, and returns the report. The search is sequential; `options.jobs` runs the
+/// cases of one point (and the hold-out cases) side by side; `options.stop` stops it at
+/// a checkpoint, which the next call resumes.
 pub fn run_fit(fit: &Fit, dir: &Path, options: &StudyOptions) -> Result<FitReport, StudyError> {
     run_fit_with(fit, dir, options, &|metrics: &[f64]| fit.objective(metrics))
 }
@@ -551,6 +827,13 @@ pub fn run_fit_with(
     options: &StudyOptions,
     objective: &Objective<'_>,
 ) -> Result<FitReport, StudyError> {
+    if !(1..=crate::cli::MAX_THREADS).contains(&options.jobs) {
+        return Err(StudyError::bad(format!(
+            "--jobs must be 1 to {}, not {}",
+            crate::cli::MAX_THREADS,
+            options.jobs
+        )));
+    }
     let search_dir = dir.join("search");
     std::fs::create_dir_all(&search_dir).map_err(|e| StudyError::io(&search_dir, e))?;
     let search = Search {
@@ -623,10 +906,38 @@ pub fn run_fit_with(
                 break;
             };
             let dp = (e.values[k] - runs[b].values[k]) / runs[b].values[k];
-            let elasticity = (0..fit.targets.len())
+            let elasticity = (0..fit.fitted_targets().count())
                 .map(|m| ((e.metrics[m] - runs[b].metrics[m]) / runs[b].metrics[m]) / dp)
                 .collect();
             sensitivity.push((e, elasticity));
+        }
+    }
+    let mut hold_out = Vec::new();
+    if let (Some(b), false) = (best, stopped) {
+        let held: Vec<Option<usize>> = (0..fit.cases.len())
+            .filter(|&c| fit.cases[c].hold_out)
+            .map(Some)
+            .collect();
+        let root = dir.join("hold_out").join(format!("run-{b:04}"));
+        let u_best: Vec<f64> = fit
+            .free
+            .iter()
+            .zip(&runs[b].values)
+            .map(|(f, &v)| f.unit(v))
+            .collect();
+        let point = fit.point(0, &u_best);
+        if let Some(status) = search.run_cases(&root, &point, &held)? {
+            for (&c, &st) in held.iter().zip(&status) {
+                let mut metrics = Vec::new();
+                for t in fit.targets.iter().filter(|t| fit.case_of(t) == c) {
+                    metrics.push(search.metric(&root, c, 0, st, &t.metric)?);
+                }
+                hold_out.push(HoldOut {
+                    case: c.map_or_else(String::new, |c| fit.cases[c].name.clone()),
+                    status: st,
+                    metrics,
+                });
+            }
         }
     }
     let report = FitReport {
@@ -634,13 +945,19 @@ pub fn run_fit_with(
         best,
         sensitivity,
         ended,
+        hold_out,
     };
     write_report(fit, &report, dir)?;
     Ok(report)
 }
 
 fn write_report(fit: &Fit, report: &FitReport, dir: &Path) -> Result<(), StudyError> {
-    let columns = fit.study.columns();
+    let fitted: Vec<&Target> = fit.fitted_targets().collect();
+    let columns: Vec<String> = fitted
+        .iter()
+        .map(|t| t.column())
+        .chain(fit.study.derived.iter().map(|d| d.name.clone()))
+        .collect();
     let mut csv = String::new();
     let mut header: Vec<String> = vec!["run".into()];
     header.extend(fit.free.iter().map(|f| f.path.clone()));
@@ -677,22 +994,17 @@ fn write_report(fit: &Fit, report: &FitReport, dir: &Path) -> Result<(), StudyEr
             md,
             "\n| metric | value | target | error | weight |\n|---|---|---|---|---|"
         );
-        for (t, y) in fit.targets.iter().zip(&e.metrics) {
+        for (t, y) in fitted.iter().zip(&e.metrics) {
             let _ = writeln!(
                 md,
                 "| `{}` | {y:.4e} | {:.4e} | {:+.1} % | {} |",
-                t.metric,
+                t.column(),
                 t.value,
                 100.0 * (y - t.value) / t.value,
                 t.weight
             );
         }
-        for (d, v) in fit
-            .study
-            .derived
-            .iter()
-            .zip(&e.metrics[fit.targets.len()..])
-        {
+        for (d, v) in fit.study.derived.iter().zip(&e.metrics[fitted.len()..]) {
             let _ = writeln!(md, "| `{}` (derived) | {v:.4e} | | | |", d.name);
         }
         if !report.sensitivity.is_empty() {
@@ -700,13 +1012,36 @@ fn write_report(fit: &Fit, report: &FitReport, dir: &Path) -> Result<(), StudyEr
                 md,
                 "\nLocal sensitivity (Δy/y)/(Δp/p), one run a step of {SENSITIVITY_STEP} of the scaled range from the best point:\n\n| parameter |"
             );
-            for t in &fit.targets {
-                let _ = write!(md, " `{}` |", t.metric);
+            for t in &fitted {
+                let _ = write!(md, " `{}` |", t.column());
             }
-            let _ = writeln!(md, "\n|---|{}", "---|".repeat(fit.targets.len()));
+            let _ = writeln!(md, "\n|---|{}", "---|".repeat(fitted.len()));
             for (f, (_, el)) in fit.free.iter().zip(&report.sensitivity) {
                 let cells: Vec<String> = el.iter().map(|x| format!("{x:+.3}")).collect();
                 let _ = writeln!(md, "| `{}` | {} |", f.path, cells.join(" | "));
+            }
+        }
+        if !report.hold_out.is_empty() {
+            let _ = writeln!(
+                md,
+                "\nHold-out cases, run once at the best point (not fitted):\n\n| case | status | metric | value | target | error |\n|---|---|---|---|---|---|"
+            );
+            for h in &report.hold_out {
+                let targets = fit
+                    .targets
+                    .iter()
+                    .filter(|t| t.case.as_ref() == Some(&h.case));
+                for (t, y) in targets.zip(&h.metrics) {
+                    let _ = writeln!(
+                        md,
+                        "| {} | {} | `{}` | {y:.4e} | {:.4e} | {:+.1} % |",
+                        h.case,
+                        format!("{:?}", h.status).to_lowercase(),
+                        t.metric,
+                        t.value,
+                        100.0 * (y - t.value) / t.value
+                    );
+                }
             }
         }
     }

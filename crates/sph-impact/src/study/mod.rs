@@ -44,7 +44,8 @@ pub use axis::{Axis, Point, Range, Spacing, cell, points};
 pub use derived::{Derived, StaticStrength};
 pub use error::StudyError;
 pub use fit::{
-    Constraint, Evaluation, Fit, FitReport, Free, Objective, Target, run_fit, run_fit_with,
+    Case, Constraint, Evaluation, Fit, FitReport, Free, HoldOut, Objective, Target, run_fit,
+    run_fit_with,
 };
 pub use runner::{StudyOptions, point_dir, run_study};
 pub use slurm::emit_slurm;

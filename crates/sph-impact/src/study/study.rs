@@ -124,7 +124,7 @@ impl Study {
         let mut study = base_study(
             &map,
             dir,
-            &file.scene,
+            ("scene", &file.scene),
             RunSettings {
                 description: file.description,
                 resolution_scale: file.resolution_scale,
@@ -421,6 +421,7 @@ pub(crate) fn read_file<T: serde::de::DeserializeOwned>(
 }
 
 /// The run options a study or fit file gives beside its scene.
+#[derive(Clone)]
 pub(crate) struct RunSettings {
     pub description: String,
     pub resolution_scale: Option<f64>,
@@ -429,11 +430,12 @@ pub(crate) struct RunSettings {
 }
 
 /// A study of the scene file `scene` (relative to `dir`) with the file's run options and
-/// nothing else yet; a scene that cannot be read is an error at the file's `scene` key.
+/// nothing else yet; a scene that cannot be read is an error at the file's key `key`
+/// (`scene`, or a fit case's `case[i].scene`).
 pub(crate) fn base_study(
     map: &SourceMap,
     dir: &Path,
-    scene: &str,
+    (key, scene): (&str, &str),
     settings: RunSettings,
 ) -> Result<Study, StudyError> {
     let scene_path = dir.join(scene);
@@ -441,7 +443,7 @@ pub(crate) fn base_study(
         crate::input::read_text(&scene_path, crate::input::MAX_INPUT_BYTES).map_err(|e| {
             locate(
                 map,
-                StudyError::at_key("scene", format!("{}: {e}", scene_path.display())),
+                StudyError::at_key(key, format!("{}: {e}", scene_path.display())),
             )
         })?;
     let mut study = Study::new(text, scene_path.display().to_string());
