@@ -1,0 +1,118 @@
+//! The smoothing length after a stage: scalar h from the density (h = n_target × the
+//! particle's measure^(1/d), capped at h_max_factor × its initial support), or the ASPH
+//! tensor advected with the velocity gradient and scaled to the same equivalent radius
+//! (docs/scenes.md, `smoothing`).
+
+use super::*;
+
+impl<D: Dimension, K: Kernel> Simulation<D, K> {
+    /// Updates the smoothing of `y` (after its density) over a stage of length `dt` with
+    /// `stage`'s rates, evaluated on `rate_state`.
+    pub(super) fn update_smoothing(
+        &self,
+        y: &mut State<D>,
+        stage: &Stage<D>,
+        dt: f64,
+        rate_state: &State<D>,
+    ) {
+        let p = &mut y.particles;
+        let d = D::DIM as f64;
+        let n_target = self.scheme.n_target;
+        match self.scheme.smoothing {
+            SmoothingMode::Scalar => {
+                let (m, rho) = (&p.mass, &p.density);
+                let (s0, cap) = (&y.spacing0, self.scheme.h_max_factor);
+                let x = &p.position;
+                p.smoothing_length
+                    .par_iter_mut()
+                    .enumerate()
+                    .for_each(|(i, h)| {
+                        // The area (or volume) per particle: m/ρ, in RZ the ring's area.
+                        if rho[i] > 0.0 {
+                            let measure = self.kernel_measure(m[i], x[i], rho[i]);
+                            *h = (n_target * measure.powf(1.0 / d)).min(cap * n_target * s0[i]);
+                        }
+                    });
+            }
+            SmoothingMode::Asph { max_aspect } => {
+                let grads = stage.grads.as_ref().expect("ASPH computes gradients");
+                let h_src = &rate_state.h_tensor;
+                let (m, rho) = (&p.mass, &p.density);
+                let (s0, cap) = (&y.spacing0, self.scheme.h_max_factor);
+                let new: Vec<(D::Tensor, f64)> = (0..p.len())
+                    .into_par_iter()
+                    .map(|i| {
+                        // The equivalent radius follows the density as in the scalar
+                        // mode, with the same cap: a particle expanding into vacuum
+                        // would otherwise grow its support without bound.
+                        let target = if rho[i] > 0.0 {
+                            let measure = self.kernel_measure(m[i], p.position[i], rho[i]);
+                            (n_target * measure.powf(1.0 / d)).min(cap * n_target * s0[i])
+                        } else {
+                            1.0 / h_src[i].sym_eigen().values[0]
+                        };
+                        asph_update(
+                            &y.h_tensor[i],
+                            &grads.each[i].velocity,
+                            dt,
+                            target,
+                            max_aspect,
+                        )
+                    })
+                    .collect();
+                for (i, (h, radius)) in new.into_iter().enumerate() {
+                    y.h_tensor[i] = h;
+                    p.smoothing_length[i] = radius;
+                }
+            }
+        }
+    }
+
+    /// A particle's kernel measure at density `rho` (the length, area or volume per
+    /// particle that h follows): m/ρ, in RZ the ring's (r, z) area
+    /// (`axisymmetric::ring_area`).
+    pub(super) fn kernel_measure(&self, m: f64, x: D::Vector, rho: f64) -> f64 {
+        match self.scheme.geometry {
+            Geometry::Cartesian => m / rho,
+            Geometry::Axisymmetric => ring_area(m, radius(x), rho),
+        }
+    }
+}
+
+/// ASPH update of one H: advect the metric G = H² with L, take its square root, scale
+/// it to the target equivalent radius and limit its aspect ratio.
+pub(super) fn asph_update<T: Tensor>(
+    h: &T,
+    l: &T,
+    dt: f64,
+    target_radius: f64,
+    max_aspect: f64,
+) -> (T, f64) {
+    let g = h.mul_tensor(h);
+    let dg = (l.transpose().mul_tensor(&g) + g.mul_tensor(l)) * (-dt);
+    let g_new = (g + dg).symmetric();
+    let eig = g_new.sym_eigen();
+    let n = T::Vector::DIM;
+    let mut lam: Vec<f64> = (0..n).map(|k| eig.values[k].max(0.0).sqrt()).collect();
+    // Limit the aspect: no semi-axis longer than max_aspect × the shortest.
+    let lmax = lam.iter().cloned().fold(0.0, f64::max);
+    if !(lmax > 0.0) {
+        return (T::IDENTITY * (1.0 / target_radius), target_radius);
+    }
+    for l in lam.iter_mut() {
+        *l = l.max(lmax / max_aspect);
+    }
+    // Scale to the target volume: Π λ_k = target^(−n).
+    let prod: f64 = lam.iter().product();
+    let scale = (target_radius.powi(-(n as i32)) / prod).powf(1.0 / n as f64);
+    let v = eig.vectors;
+    let h_new = T::from_fn(|a, b| {
+        (0..n)
+            .map(|k| v.component(a, k) * lam[k] * scale * v.component(b, k))
+            .sum()
+    });
+    // V diag(λ) Vᵀ is symmetric in exact arithmetic; make it so in floating point.
+    let h_new = h_new.symmetric();
+    let radius = equivalent_radius(&h_new);
+    (h_new, radius)
+}

@@ -1,0 +1,453 @@
+//! One derivative evaluation of the RK2 step (a stage): the EOS pass, damage and the
+//! damaged moduli, the neighbour search, the gradient and pair passes, the boundary
+//! ghosts' forces, the RZ hoop terms, and the time-step vote of the state evaluated.
+
+use super::*;
+
+/// The derivatives of one state, with what the stress update and the time-step vote read
+/// of it.
+pub(super) struct Stage<D: Dimension> {
+    pub(super) rates: Vec<Rates<D>>,
+    /// (i, the ghosts' part of dv_i/dt) for the particles with ghost neighbours.
+    pub(super) boundary: Vec<(u32, D::Vector)>,
+    pub(super) grads: Option<GradientSet<D>>,
+    pub(super) sound_speed: Vec<f64>,
+    pub(super) pressure: Vec<f64>,
+    /// Shear modulus per particle (0 for fluids).
+    pub(super) shear_modulus: Vec<f64>,
+    /// Damage rates and bounds (empty without damage).
+    pub(super) damage_rates: Vec<DamageRate>,
+    /// Tensor-damage growth (empty unless some material's damage is a tensor).
+    pub(super) tensor_rates: Vec<TensorRate>,
+}
+
+impl<D: Dimension, K: Kernel> Simulation<D, K> {
+    /// Particle spacing Δx_i = (smallest support semi-axis)/n_target.
+    pub(super) fn spacing(&self, state: &State<D>, i: usize) -> f64 {
+        let h_min = if state.h_tensor.is_empty() {
+            state.particles.smoothing_length[i]
+        } else {
+            1.0 / state.h_tensor[i].sym_eigen().values[D::DIM - 1]
+        };
+        h_min / self.scheme.n_target
+    }
+
+    /// Derivatives of `state`, and the neighbour list used.
+    pub(super) fn stage(
+        &mut self,
+        state: &mut State<D>,
+    ) -> Result<(Stage<D>, NeighborList), SolverError> {
+        let t0 = Instant::now();
+        let (pressure, mut sound_speed) = eos_pass(&state.particles, &self.materials);
+        let damage = damage_of(state, &self.materials);
+        // The pair terms see the damaged pressure P_D (paper §2).
+        let pressure_d = damaged_pressures(&pressure, &damage);
+        let mut t1 = Instant::now();
+        let support: Vec<f64> = if state.h_tensor.is_empty() {
+            state.particles.smoothing_length.clone()
+        } else {
+            state
+                .h_tensor
+                .iter()
+                .map(|h| 1.0 / h.sym_eigen().values[0])
+                .collect()
+        };
+        // A solid's signal speed in the pair's Riemann problem and viscosity is the
+        // longitudinal wave speed c_L = √(c² + 4G/(3ρ)) (paper §2.1).
+        let mut shear_modulus = self.shear_moduli(state, &pressure);
+        let adhesion = self.adhesion_flags(state, &pressure, &sound_speed, &damage);
+        // Only what the pair passes read stays alive through them (peak memory): the
+        // undamaged pressure and the supports are spent, and P_D, c_L and D move into the
+        // extended arrays, which are read back for the real particles below.
+        drop(pressure);
+        let signal = longitudinal_speeds(&sound_speed, &shear_modulus, &state.particles.density);
+        let mut ext = Extended::build(
+            state,
+            &state.stress,
+            pressure_d,
+            signal,
+            damage,
+            &support,
+            &self.boundaries,
+        );
+        ext.coupling = self.scheme.stress_coupling;
+        if !adhesion.is_empty() {
+            ext.adhesion = ext.over_ghosts(adhesion);
+        }
+        let bulk_viscosity = self.scheme.viscosity.sound_speed == ViscositySoundSpeed::Bulk;
+        if bulk_viscosity {
+            ext.bulk_sound_speed = ext.over_ghosts(sound_speed.clone());
+        }
+        if self.scheme.energy_diffusion > 0.0 {
+            ext.specific_energy = ext.over_ghosts(state.particles.specific_energy.clone());
+        }
+        drop(support);
+        let n_real = ext.n_real;
+        // D of the real particles (empty without damage).
+        let n_damage = ext.damage.len().min(n_real);
+        if !state.damage_tensor.is_empty() {
+            // The pairs project each particle's damage tensor on their direction; a
+            // scalar material's D enters as D I.
+            let tensor_form: Vec<bool> = self.materials.iter().map(has_tensor_damage).collect();
+            let tensors = (0..n_real)
+                .map(|i| {
+                    if tensor_form[state.particles.material[i] as usize] {
+                        state.damage_tensor[i]
+                    } else {
+                        sph_core::glam::DMat3::IDENTITY * ext.damage[i]
+                    }
+                })
+                .collect();
+            ext.set_damage_tensor(tensors);
+        }
+        let rz = self.scheme.geometry == Geometry::Axisymmetric;
+        if rz {
+            ext.radius = ext.position.iter().map(|x| radius(*x)).collect();
+            let table = self.smoothed_radius.as_ref().expect("RZ has the table");
+            ext.smoothed_radius = ext
+                .radius
+                .iter()
+                .zip(&ext.h)
+                .map(|(&r, &h)| table.at(r, h))
+                .collect();
+            // A mirror ghost stands for the same area of material as its source, so its
+            // ring mass per radian scales with its own radius: ρ A r' (a wall normal to
+            // r is a cylinder; the axis and walls normal to z leave r unchanged).
+            for k in ext.n_real..ext.position.len() {
+                let src = ext.source[k] as usize;
+                ext.mass[k] *= ext.radius[k] / ext.radius[src];
+            }
+            // The artificial stress' Δp is the ring's (r, z) spacing at its present radius
+            // (a mirror or wall ghost has its source's: it stands for the same area).
+            if !self.scheme.artificial_stress.is_off() {
+                for k in 0..ext.position.len() {
+                    let src = ext.source[k] as usize;
+                    ext.spacing0[k] = reference_spacing(
+                        state.spacing0[src],
+                        self.radius0[src],
+                        ext.radius[src],
+                        self.scheme.h_max_factor,
+                    );
+                }
+            }
+        }
+        let t_search = Instant::now();
+        let list = if ext.h_tensor.is_empty() {
+            self.search
+                .neighbors(&ext.position, &ScalarSupport::new(&ext.h)?)?
+        } else {
+            self.search
+                .neighbors(&ext.position, &TensorSupport::new(&ext.h_tensor)?)?
+        };
+        let search = t_search.elapsed().as_secs_f64();
+        if self.scheme.density == DensityForm::Summation {
+            // Density from the positions, then the EOS again with it (real and ghosts).
+            let rho = if ext.h_tensor.is_empty() {
+                summation_density(
+                    &ext,
+                    &list,
+                    &ScalarPairKernel::new(self.kernel, &ext.h, D::DIM),
+                    self.smoothed_radius.as_ref(),
+                )
+            } else {
+                summation_density(
+                    &ext,
+                    &list,
+                    &TensorPairKernel {
+                        kernel: self.kernel,
+                        h_tensor: &ext.h_tensor,
+                        h: &ext.h,
+                    },
+                    self.smoothed_radius.as_ref(),
+                )
+            };
+            state.particles.density = rho;
+            let t = Instant::now();
+            let pressure;
+            (pressure, sound_speed) = eos_pass(&state.particles, &self.materials);
+            let pressure_d = damaged_pressures(&pressure, &ext.damage[..n_damage]);
+            shear_modulus = self.shear_moduli(state, &pressure);
+            let adhesion =
+                self.adhesion_flags(state, &pressure, &sound_speed, &ext.damage[..n_damage]);
+            if !adhesion.is_empty() {
+                ext.adhesion = ext.over_ghosts(adhesion);
+            }
+            if bulk_viscosity {
+                ext.bulk_sound_speed = ext.over_ghosts(sound_speed.clone());
+            }
+            let signal =
+                longitudinal_speeds(&sound_speed, &shear_modulus, &state.particles.density);
+            t1 += t.elapsed();
+            for k in 0..ext.position.len() {
+                let s = ext.source[k] as usize;
+                ext.density[k] = state.particles.density[s];
+                ext.pressure[k] = pressure_d[s];
+                ext.sound_speed[k] = signal[s];
+            }
+        }
+        if !self.scheme.artificial_stress.is_off() {
+            ext.astress = artificial_stress_tensors(&ext, &self.scheme.artificial_stress);
+        }
+        let t2 = Instant::now();
+        let need_grads = self.scheme.limiter != sph_riemann::Limiter::None
+            || !state.h_tensor.is_empty()
+            || self.scheme.gradient_correction
+            || self.scheme.momentum_correction
+            || self.scheme.grad_h
+            || self.scheme.viscosity.switch != sph_riemann::ViscositySwitch::None
+            || self.scheme.energy_diffusion > 0.0
+            || !state.stress.is_empty();
+        let options = GradientOptions {
+            correct: self.scheme.gradient_correction,
+            correct_strain: self.scheme.strain_rate_correction && !state.stress.is_empty(),
+            keep_correction: self.scheme.momentum_correction,
+            grad_h: self.scheme.grad_h,
+        };
+        let rows = self
+            .pair_block_rows
+            .unwrap_or_else(|| pair_blocks::block_rows(ext.n_real));
+        let (grads, rates_out, t3) = if ext.h_tensor.is_empty() {
+            let pk = ScalarPairKernel::new(self.kernel, &ext.h, D::DIM);
+            let g = need_grads.then(|| gradients(&ext, &list, &pk, options, rows));
+            let t3 = Instant::now();
+            let r = rates(&ext, &list, &pk, g.as_ref(), &self.scheme, rows);
+            (g, r, t3)
+        } else {
+            let pk = TensorPairKernel {
+                kernel: self.kernel,
+                h_tensor: &ext.h_tensor,
+                h: &ext.h,
+            };
+            let g = need_grads.then(|| gradients(&ext, &list, &pk, options, rows));
+            let t3 = Instant::now();
+            let r = rates(&ext, &list, &pk, g.as_ref(), &self.scheme, rows);
+            (g, r, t3)
+        };
+        let PairRates {
+            each: mut rates_out,
+            boundary,
+            hoop_gauge,
+        } = rates_out;
+        if rz {
+            // The hoop stress is weakened by the damage across the hoop direction: D for
+            // a scalar damage, D_θθ of a tensor (θ is a principal direction in RZ).
+            let hoop_damage: Vec<f64> = if ext.damage_tensor.is_empty() {
+                Vec::new()
+            } else {
+                ext.damage_tensor[..n_real]
+                    .iter()
+                    .map(|d| d.z_axis.z.clamp(0.0, 1.0))
+                    .collect()
+            };
+            add_hoop_terms(
+                &HoopInput {
+                    particles: &state.particles,
+                    stress: &state.stress,
+                    damage: if hoop_damage.is_empty() {
+                        &ext.damage[..n_damage]
+                    } else {
+                        &hoop_damage
+                    },
+                    pressure: &ext.pressure[..n_real],
+                    coupling: self.scheme.stress_coupling,
+                    energy: self.scheme.energy,
+                    smoothed_radius: self.smoothed_radius.as_ref().expect("RZ has the table"),
+                },
+                &mut rates_out,
+                &hoop_gauge,
+            );
+        }
+        drop(hoop_gauge);
+        // The crack-growth length R_s: the spacing, or the support radius (CrackLength).
+        let crack_length = match self.scheme.crack_length {
+            CrackLength::Spacing => 1.0,
+            CrackLength::Support => self.scheme.n_target,
+        };
+        let spacing: Vec<f64> = if n_damage == 0 {
+            Vec::new()
+        } else {
+            (0..state.particles.len())
+                .map(|i| self.spacing(state, i) * crack_length)
+                .collect()
+        };
+        // Tensor damage turns with the particle's spin Ω = ½ (L − Lᵀ).
+        let spin: Vec<sph_core::glam::DMat3> = match &grads {
+            Some(gr) if !state.damage_tensor.is_empty() => gr
+                .each
+                .iter()
+                .take(n_real)
+                .map(|g| sph_strength::spin(&D::embed(&g.strain_velocity)))
+                .collect(),
+            _ => Vec::new(),
+        };
+        let damage_input = DamageStageInput {
+            stress: &state.stress,
+            pressure: &ext.pressure[..n_real],
+            sound_speed: &sound_speed,
+            shear_modulus: &shear_modulus,
+            damage: &ext.damage[..n_damage],
+            coupling: self.scheme.stress_coupling,
+            spacing: &spacing,
+            spin: &spin,
+        };
+        let damage_rates = damage_rates(state, &self.materials, &damage_input);
+        let tensor_rates = tensor_damage_rates(state, &self.materials, &damage_input);
+        let t4 = Instant::now();
+        self.timings.eos += (t1 - t0).as_secs_f64();
+        self.timings.neighbours += search;
+        self.timings.setup += (t2 - t1).as_secs_f64() - search;
+        self.timings.gradients += (t3 - t2).as_secs_f64();
+        self.timings.pairs += (t4 - t3).as_secs_f64();
+        self.timings.derivative_evaluations += n_real as u64;
+        let mut pressure_d = std::mem::take(&mut ext.pressure);
+        pressure_d.truncate(n_real);
+        Ok((
+            Stage {
+                rates: rates_out,
+                boundary,
+                grads,
+                sound_speed,
+                pressure: pressure_d,
+                shear_modulus,
+                damage_rates,
+                tensor_rates,
+            },
+            list,
+        ))
+    }
+
+    /// The smallest time-step vote of a stage.
+    pub(super) fn vote(&self, state: &State<D>, stage: &Stage<D>) -> TimestepVote {
+        let p = &state.particles;
+        let mut best = TimestepVote {
+            dt: f64::INFINITY,
+            particle_id: 0,
+            reason: crate::solver::timestep::REASON_NONE,
+        };
+        for i in 0..p.len() {
+            let dx = self.spacing(state, i);
+            let r = &stage.rates[i];
+            best = best.min(density_vote(self.scheme.cfl, p.density[i], r.drho, p.id[i]));
+            // For a solid the signal is the longitudinal wave: c_L² = c² + 4G/(3ρ) (paper §2.5).
+            let c_signal = sph_damage::longitudinal_speed(
+                stage.sound_speed[i],
+                stage.shear_modulus[i],
+                p.density[i],
+            );
+            best = best.min(cfl_vote(self.scheme.cfl, dx, c_signal, r.approach, p.id[i]));
+            best = best.min(acceleration_vote(self.scheme.cfl, dx, r.dv.norm(), p.id[i]));
+        }
+        best
+    }
+
+    /// Shear modulus of every particle (0 for fluids, and for everything when no
+    /// material has strength).
+    pub(super) fn shear_moduli(&self, s: &State<D>, pressure: &[f64]) -> Vec<f64> {
+        if s.stress.is_empty() {
+            return vec![0.0; s.particles.len()];
+        }
+        (0..s.particles.len())
+            .into_par_iter()
+            .map(
+                |i| match &self.materials[s.particles.material[i] as usize].strength {
+                    Some(model) => {
+                        let st = self.strength_state(s, i, pressure[i]);
+                        if self.scheme.damaged_moduli {
+                            model.damaged_shear_modulus(&st)
+                        } else {
+                            model.shear_modulus(&st)
+                        }
+                    }
+                    None => 0.0,
+                },
+            )
+            .collect()
+    }
+
+    /// Whether each particle is past its adhesion limit (in tension and damaged,
+    /// sph_damage::decoupling::past_adhesion), from its undamaged pressure, bulk sound
+    /// speed and damage; empty unless fractured material is decoupled
+    /// (`SchemeConfig::decouple_damaged`) and some material has damage.
+    pub(super) fn adhesion_flags(
+        &self,
+        s: &State<D>,
+        pressure: &[f64],
+        sound_speed: &[f64],
+        damage: &[f64],
+    ) -> Vec<bool> {
+        if !self.scheme.decouple_damaged || damage.is_empty() {
+            return Vec::new();
+        }
+        let rho = &s.particles.density;
+        (0..s.particles.len())
+            .map(|i| {
+                let rho_c2 = rho[i] * sound_speed[i] * sound_speed[i];
+                sph_damage::decoupling::past_adhesion(pressure[i], damage[i], rho_c2)
+            })
+            .collect()
+    }
+}
+
+/// c_L = √(c² + 4G/(3ρ)) of every particle (c itself for fluids).
+pub(super) fn longitudinal_speeds(
+    sound_speed: &[f64],
+    shear_modulus: &[f64],
+    density: &[f64],
+) -> Vec<f64> {
+    sound_speed
+        .iter()
+        .zip(shear_modulus)
+        .zip(density)
+        .map(|((&c, &g), &rho)| sph_damage::longitudinal_speed(c, g, rho))
+        .collect()
+}
+
+/// P_D of every particle (P itself without damage).
+pub(super) fn damaged_pressures(pressure: &[f64], damage: &[f64]) -> Vec<f64> {
+    if damage.is_empty() {
+        return pressure.to_vec();
+    }
+    pressure
+        .iter()
+        .zip(damage)
+        .map(|(&p, &d)| damaged_pressure(p, d))
+        .collect()
+}
+
+/// The artificial-stress tensor R of every particle, ghosts included, from its total
+/// stress σ = (1 − D) S − P_D I (paper §2.3; S itself where damage acts on the yield
+/// strength only).
+pub(super) fn artificial_stress_tensors<D: Dimension>(
+    ext: &Extended<'_, D>,
+    a: &sph_riemann::ArtificialStress,
+) -> Vec<D::Tensor> {
+    (0..ext.position.len())
+        .into_par_iter()
+        .map(|k| {
+            let p = ext.pressure[k];
+            let sigma = if !ext.has_stress() {
+                D::Tensor::IDENTITY * (-p)
+            } else {
+                D::project(&ext.stress(k)) - D::Tensor::IDENTITY * p
+            };
+            a.tensor(&sigma, p, ext.density[k])
+        })
+        .collect()
+}
+
+/// P and c of every particle.
+pub(super) fn eos_pass<D: Dimension>(
+    p: &Particles<D>,
+    materials: &[Material],
+) -> (Vec<f64>, Vec<f64>) {
+    let pc: Vec<(f64, f64)> = (0..p.len())
+        .into_par_iter()
+        .map(|i| {
+            let pt = materials[p.material[i] as usize]
+                .eos
+                .evaluate(p.density[i], p.specific_energy[i]);
+            (pt.pressure, pt.sound_speed)
+        })
+        .collect();
+    pc.into_iter().unzip()
+}
