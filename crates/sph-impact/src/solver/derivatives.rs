@@ -20,10 +20,10 @@
 use crate::solver::config::{DensityForm, EnergyForm, MomentumForm, SchemeConfig};
 use crate::solver::pair_blocks;
 use crate::solver::pair_kernel::PairKernel;
+use crate::solver::pair_rules::{self, DiffusionPair, Side, ViscosityPair, decoupled};
 use crate::solver::state::Extended;
 use rayon::prelude::*;
 use sph_core::{Dimension, NeighborList, Tensor, Vector};
-use sph_damage::tensor::projected_damage;
 use sph_riemann::{PairInterface, SideState, interface_velocity, reconstruct};
 
 /// Per-particle gradients (pass 1).
@@ -519,57 +519,6 @@ fn gradients_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
     GradientSet { each, correction }
 }
 
-/// Whether the pair (i, j), r = x_i − x_j, v_ij = v_i − v_j, is decoupled as fractured
-/// material (`SchemeConfig::decouple_damaged`, sph_damage::decoupling): same material,
-/// separating, one side in tension past its adhesion limit and one side fully damaged
-/// (its damage projected on the pair's axis for tensor damage). False when the rule is
-/// off (no adhesion flags). Symmetric in (i, j).
-#[inline]
-fn decoupled<D: Dimension>(
-    ext: &Extended<'_, D>,
-    i: usize,
-    j: usize,
-    r: D::Vector,
-    vij: D::Vector,
-) -> bool {
-    if ext.adhesion.is_empty() || ext.material[i] != ext.material[j] {
-        return false;
-    }
-    let separating = r.dot(vij) > 0.0;
-    let (ai, aj) = (ext.adhesion[i], ext.adhesion[j]);
-    if !separating || !(ai || aj) {
-        return false;
-    }
-    let (di, dj) = if ext.damage_tensor.is_empty() {
-        (ext.damage[i], ext.damage[j])
-    } else {
-        let n = sph_core::glam::DVec3::from_array((r / r.norm()).to_array3());
-        (
-            projected_damage(&ext.damage_tensor[i], n),
-            projected_damage(&ext.damage_tensor[j], n),
-        )
-    };
-    sph_damage::decoupling::decouples(separating, ai, aj, di, dj)
-}
-
-/// The pair's mean sound speed for the viscosity and FSISPH's smoothing terms: the
-/// bulk sound speeds where the extended state carries them
-/// (`ViscositySoundSpeed::Bulk`), else the signal speeds `ci`, `cj` (c_L for solids).
-#[inline]
-fn pair_bulk_speed<D: Dimension>(
-    ext: &Extended<'_, D>,
-    i: usize,
-    j: usize,
-    ci: f64,
-    cj: f64,
-) -> f64 {
-    if ext.bulk_sound_speed.is_empty() {
-        0.5 * (ci + cj)
-    } else {
-        0.5 * (ext.bulk_sound_speed[i] + ext.bulk_sound_speed[j])
-    }
-}
-
 /// M⁻¹ if M is invertible and not too far from the identity (condition number of its
 /// symmetric part below 100), else None.
 fn well_conditioned_inverse<T: Tensor>(m: &T) -> Option<T> {
@@ -820,49 +769,65 @@ fn rates_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
         // within one material, v* += f_D κ c̄ (1 + min(0, max(−1, v_ij·r̂/c̄)))
         // clamp((P_j − P_i)/(K_i + K_j), ±¼) r̂, with K + 4G/3 = ρ c_L² and the
         // reconstructed pressures; symmetric in (i, j), so conservation is unchanged.
-        if scheme.density_stabilization > 0.0 && same_material {
-            let c_bar = pair_bulk_speed(ext, i, j, ci, cj);
-            if c_bar > 0.0 {
-                let f_d = sph_damage::fsisph_factor(di, dj);
-                let c_factor = 1.0 + (vij.dot(r_hat) / c_bar).clamp(-1.0, 0.0);
-                let k_sum = rhoi * ci * ci + rhoj * cj * cj;
-                let dp = ((pfj - pfi) / k_sum).clamp(-0.25, 0.25);
-                v_star += r_hat * (f_d * scheme.density_stabilization * c_factor * c_bar * dp);
-            }
+        if scheme.density_stabilization > 0.0
+            && same_material
+            && let Some(dv) = pair_rules::density_stabilization(
+                ext,
+                (i, j),
+                (
+                    Side {
+                        rho: rhoi,
+                        c: ci,
+                        p: pfi,
+                        d: di,
+                    },
+                    Side {
+                        rho: rhoj,
+                        c: cj,
+                        p: pfj,
+                        d: dj,
+                    },
+                ),
+                scheme.density_stabilization,
+                vij,
+                r_hat,
+            )
+        {
+            v_star += dv;
         }
 
         let rj = radius(j);
         let (etai, etaj) = (a.eta, rhoj * smooth_r(j));
         let r_bar = 0.5 * (ri + rj);
-        let h_bar = scheme.viscosity_length_factor * 0.5 * (pk.h(i) + pk.h(j));
-        // The viscosity's relative velocity: v_i − v_j, or each side reconstructed to
-        // the midpoint with its limited gradient (Spheral's limited viscosity).
-        let v_visc = match l_pair {
-            Some((li, lj)) if visc.reconstruct => {
-                let dx_pair = pk.h(i).max(pk.h(j)) / scheme.n_target;
-                sph_riemann::limited_relative_velocity(vi, vj, &li, &lj, r, dist / dx_pair)
-            }
-            _ => vij,
-        };
-        let c_visc = pair_bulk_speed(ext, i, j, ci, cj);
-        // In RZ the viscous pressure is weighted like the pressure: × r̄/(r_i r_j).
-        let mut pi_ij =
-            visc.pi(v_visc, r, 0.5 * (rhoi + rhoj), c_visc, h_bar) * (r_bar / (ri * rj));
-        if !switch.is_empty() && pi_ij != 0.0 {
-            pi_ij *= 0.5 * (switch_of(i) + switch_of(j));
-        }
-        // Artificial stress: m_j f_ij^n (R_i + R_j)·∇_i W (paper §2.3; R from the
-        // total stress, repulsive in tension), here per unit mass of the partner.
+        let pi_ij = pair_rules::viscous_pressure(
+            ext,
+            (i, j),
+            &visc,
+            (scheme.viscosity_length_factor, scheme.n_target),
+            &ViscosityPair {
+                v: (vi, vj),
+                vij,
+                gradients: l_pair,
+                r,
+                dist,
+                rho: (rhoi, rhoj),
+                c: (ci, cj),
+                h: (pk.h(i), pk.h(j)),
+                weights: (ri, rj),
+                switch: (!switch.is_empty()).then(|| (switch_of(i), switch_of(j))),
+            },
+        );
         let (a_unit, f_astress) = if use_astress {
-            let r_sum = ext.astress[i] * (1.0 / ri) + ext.astress[j] * (1.0 / rj);
-            // In RZ the factor also carries the hoop part (`finish`), whatever R_i + R_j.
-            if r_sum.double_dot(&r_sum) > 0.0 || rz {
-                let dp = 0.5 * (ext.spacing0[i] + ext.spacing0[j]);
-                let f = astress.kernel_factor(pk.w(i, j, r) / pk.w_at(i, j, r_hat, dp));
-                (r_sum.mul_vec(g) * f, f)
-            } else {
-                (D::Vector::ZERO, 0.0)
-            }
+            pair_rules::artificial_stress::<D, P, RZ>(
+                ext,
+                pk,
+                &astress,
+                (i, j),
+                (ri, rj),
+                r,
+                r_hat,
+                g,
+            )
         } else {
             (D::Vector::ZERO, 0.0)
         };
@@ -875,29 +840,16 @@ fn rates_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
         // The pair's deviatoric stresses, weakened by damage: each particle's own
         // (1 − D) across a material interface, the scheme's coupling within a body.
         let (si, sj) = if solid {
-            let coupling = scheme.stress_coupling;
-            // Tensor damage: each particle's damage across the pair's direction
-            // (sph_damage::tensor); a scalar damage projects to itself.
-            let (ci, cj) = if ext.damage_tensor.is_empty() {
-                (di, dj)
-            } else {
-                let n = sph_core::glam::DVec3::from_array(r_hat.to_array3());
-                (
-                    projected_damage(&ext.damage_tensor[i], n),
-                    projected_damage(&ext.damage_tensor[j], n),
-                )
-            };
-            let sj_undamaged = D::project(&ext.undamaged_stress(j));
-            let (ai, aj) = if !same_material {
-                coupling.interface_factors(ci, cj)
-            } else if coupling.needs_tension_test() {
-                // FSISPH: is the pair in tension along its axis?
-                let s_rr = r_hat.dot((a.s_undamaged + sj_undamaged).mul_vec(r_hat));
-                coupling.factors(ci, cj, sph_damage::pair_is_tensile(s_rr, pi + pj))
-            } else {
-                coupling.factors(ci, cj, false)
-            };
-            (a.s_undamaged * ai, sj_undamaged * aj)
+            pair_rules::coupled_stresses(
+                ext,
+                &scheme.stress_coupling,
+                (i, j),
+                a.s_undamaged,
+                (di, dj),
+                (pi, pj),
+                same_material,
+                r_hat,
+            )
         } else {
             (D::Tensor::ZERO, D::Tensor::ZERO)
         };
@@ -994,17 +946,21 @@ fn rates_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
         // ẽ the energies reconstructed to the midpoint (Spheral's limiter), c_eff = max(0, min(c̄,
         // c̄ + v_ij·r̂)) and η = r/h̄. Antisymmetric in (i, j), so Σ m e is unchanged.
         if diffuse && same_material {
-            let (ei, ej) = (ext.specific_energy[i], ext.specific_energy[j]);
-            let half = r * 0.5;
-            let (ei_t, ej_t) =
-                sph_riemann::spheral_reconstruct(ei, ej, ge_pair.0.dot(half), ge_pair.1.dot(half));
-            let c_bar = pair_bulk_speed(ext, i, j, ci, cj);
-            let c_eff = (c_bar + vij.dot(r_hat)).min(c_bar).max(0.0);
-            let h_pair = 0.5 * (pk.h(i) + pk.h(j));
-            let eta = r / h_pair;
-            let eta_bar = 0.5 * (etai + etaj);
-            let diffusion = scheme.energy_diffusion * c_eff * (ei_t - ej_t) * eta.dot(g)
-                / (eta_bar * eta.norm_squared());
+            let diffusion = pair_rules::energy_diffusion(
+                ext,
+                (i, j),
+                scheme.energy_diffusion,
+                &DiffusionPair {
+                    energy_gradients: ge_pair,
+                    r,
+                    r_hat,
+                    vij,
+                    g,
+                    h: (pk.h(i), pk.h(j)),
+                    eta: (etai, etaj),
+                    c: (ci, cj),
+                },
+            );
             to_i.work += mj * diffusion;
             to_i.de += mj * diffusion;
             if both {

@@ -10,6 +10,7 @@ mod free_flight;
 pub mod material;
 mod pair_blocks;
 mod pair_kernel;
+mod pair_rules;
 pub mod simulation;
 pub mod state;
 pub mod timestep;

@@ -1,0 +1,36 @@
+//! The artificial stress of a pair (paper §2.3; Monaghan 2000, Gray et al. 2001):
+//! m_j f_ij^n (R_i + R_j)·∇_i W, with R from the total stress (repulsive in tension) and
+//! f_ij = W(r_ij)/W(Δp), here per unit mass of the partner. In RZ each R is weighted by
+//! 1/r like the stress, and f_ij is also returned for the hoop part (`rates`' finish).
+//! Symmetric in (i, j) through ∇W.
+
+use crate::solver::pair_kernel::PairKernel;
+use crate::solver::state::Extended;
+use sph_core::{Dimension, Tensor, Vector};
+use sph_riemann::ArtificialStress;
+
+/// (the artificial-stress force per unit partner mass, f_ij) of the pair (i, j) with
+/// r = x_i − x_j, r̂, the kernel gradient `g` and the RZ weights r_i, r_j (1 in
+/// Cartesian runs); zero where R_i + R_j vanishes (outside RZ, where f_ij is still
+/// needed).
+#[inline(always)]
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn artificial_stress<D: Dimension, P: PairKernel<D>, const RZ: bool>(
+    ext: &Extended<'_, D>,
+    pk: &P,
+    astress: &ArtificialStress,
+    (i, j): (usize, usize),
+    (ri, rj): (f64, f64),
+    r: D::Vector,
+    r_hat: D::Vector,
+    g: D::Vector,
+) -> (D::Vector, f64) {
+    let r_sum = ext.astress[i] * (1.0 / ri) + ext.astress[j] * (1.0 / rj);
+    if r_sum.double_dot(&r_sum) > 0.0 || RZ {
+        let dp = 0.5 * (ext.spacing0[i] + ext.spacing0[j]);
+        let f = astress.kernel_factor(pk.w(i, j, r) / pk.w_at(i, j, r_hat, dp));
+        (r_sum.mul_vec(g) * f, f)
+    } else {
+        (D::Vector::ZERO, 0.0)
+    }
+}
