@@ -57,7 +57,13 @@ pub fn mass_fractions_above(
     }
     Ok(thresholds
         .iter()
-        .map(|&t| sel.iter().filter(|s| s.0 >= t).map(|s| s.1).sum::<f64>() / total)
+        // From +0: `Sum` of an empty iterator is −0, which a table prints as "-0".
+        .map(|&t| {
+            sel.iter()
+                .filter(|s| s.0 >= t)
+                .fold(0.0, |sum, s| sum + s.1)
+                / total
+        })
         .collect())
 }
 
@@ -152,6 +158,8 @@ mod tests {
             (f.incipient_vaporisation, f.complete_vaporisation),
             (0.5, 0.0)
         );
+        // A fraction of nothing is +0, not −0 (which tables print as "-0").
+        assert!(f.complete_vaporisation.is_sign_positive());
         let h = energy_histogram(&view, &[0], &e, uniform_edges(0.0, 4.0e6, 2).unwrap()).unwrap();
         assert_eq!(
             (h.mass.clone(), h.below, h.above),
