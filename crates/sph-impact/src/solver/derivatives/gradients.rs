@@ -1,0 +1,286 @@
+//! Pass 1: per real particle, the velocity, pressure and energy gradients, the linear
+//! correction M⁻¹ and the grad-h factor Ω, from sums over its neighbours.
+
+use super::*;
+
+/// Per-particle gradients (pass 1).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Gradients<D: Dimension> {
+    pub velocity: D::Tensor,
+    pub pressure: D::Vector,
+    /// The grad-h factor Ω_i = 1 + h_i/(dρ_i) Σ_j m_j ∂W(r_ij, h_i)/∂h.
+    pub omega: f64,
+    /// The velocity gradient that drives the deviatoric stress (linearly corrected when
+    /// `strain_rate_correction` is on). The Jaumann rate is formed from it when the stress
+    /// is updated, so pass 2 does not hold a stress rate per particle.
+    pub strain_velocity: D::Tensor,
+    /// ∇e from the same-material pairs, for the energy diffusion's reconstruction (zero
+    /// unless the extended state carries the specific energies).
+    pub energy: D::Vector,
+}
+
+/// The result of pass 1: the gradients, and the linear gradient corrections M_i⁻ᵀ
+/// (identity where M is singular) only when `gradient_correction` or
+/// `momentum_correction` is on — otherwise
+/// empty, which saves a tensor per particle (72 bytes in 3-D) at the stage's memory peak.
+#[derive(Clone, Debug)]
+pub(crate) struct GradientSet<D: Dimension> {
+    pub each: Vec<Gradients<D>>,
+    pub correction: Vec<D::Tensor>,
+}
+
+/// What pass 1 must produce beyond ∇v and ∇P.
+#[derive(Clone, Copy, Debug, Default)]
+pub(crate) struct GradientOptions {
+    /// Linear-corrected ∇v, ∇P and ∇e (`gradient_correction`).
+    pub correct: bool,
+    /// A linear-corrected strain rate (`strain_rate_correction`, with stresses).
+    pub correct_strain: bool,
+    /// Keep the corrections M⁻ᵀ for the momentum equation (`momentum_correction`).
+    pub keep_correction: bool,
+    /// The grad-h factor Ω (`grad_h`); else Ω = 1 and its sums are skipped.
+    pub grad_h: bool,
+}
+
+impl GradientOptions {
+    /// Whether the moment matrix M (and its inverse) is needed.
+    fn needs_moments(&self) -> bool {
+        self.correct || self.correct_strain || self.keep_correction
+    }
+}
+
+/// Pass 1's sums of one particle: Σ V_j (v_j − v_i) ⊗ ∇W̄, Σ V_j (P_j − P_i) ∇W̄, the
+/// moment matrix Σ V_j (x_j − x_i) ⊗ ∇W̄, Σ V_j (e_j − e_i) ∇W̄ and Σ m_j ∂W/∂h.
+struct Sums<D: Dimension> {
+    l: D::Tensor,
+    gp: D::Vector,
+    m: D::Tensor,
+    ge: D::Vector,
+    dwdh: f64,
+}
+
+/// One pair's terms of pass 1 before the partner's volume: (f_j − f_i) ⊗ ∇_i W̄ and
+/// (x_j − x_i) ⊗ ∇_i W̄ are the same seen from i and from j (both factors change sign),
+/// so a pair evaluated once adds them to both sides with the other's volume. `None`:
+/// not summed (a decoupled pair's velocity gradient, energies across materials, M
+/// when unused).
+struct PairGradients<D: Dimension> {
+    l: Option<D::Tensor>,
+    gp: D::Vector,
+    ge: Option<D::Vector>,
+    m: Option<D::Tensor>,
+}
+
+impl<D: Dimension> PairGradients<D> {
+    /// Adds the terms times the partner's volume `vol`, and `dwdh` (m_partner ∂W/∂h).
+    #[inline(always)]
+    fn add_to(&self, s: &mut Sums<D>, vol: f64, dwdh: f64) {
+        if let Some(l) = self.l {
+            s.l += l * vol;
+        }
+        s.gp += self.gp * vol;
+        if let Some(ge) = self.ge {
+            s.ge += ge * vol;
+        }
+        if let Some(m) = self.m {
+            s.m += m * vol;
+        }
+        s.dwdh += dwdh;
+    }
+}
+
+/// Pass 1.
+pub(crate) fn gradients<D: Dimension, P: PairKernel<D>>(
+    ext: &Extended<'_, D>,
+    list: &NeighborList,
+    pk: &P,
+    options: GradientOptions,
+    rows: usize,
+) -> GradientSet<D> {
+    per_geometry!(gradients_in(ext, list, pk, options, rows))
+}
+
+/// [`gradients`] for one geometry (`RZ`), fixed at compile time.
+fn gradients_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
+    ext: &Extended<'_, D>,
+    list: &NeighborList,
+    pk: &P,
+    options: GradientOptions,
+    rows: usize,
+) -> GradientSet<D> {
+    let GradientOptions {
+        correct,
+        correct_strain,
+        keep_correction,
+        grad_h,
+    } = options;
+    let moments = options.needs_moments();
+    let rz = RZ;
+    // The 2-D density of the pair sums: η = ρ r in RZ (ring masses per radian).
+    let eta = |k: usize| {
+        if rz {
+            ext.density[k] * ext.smoothed_radius[k]
+        } else {
+            ext.density[k]
+        }
+    };
+    let energy = !ext.specific_energy.is_empty();
+    let d = D::DIM as f64;
+    // The pair (i, j) with dx = x_j − x_i, added to i's sums and, for a pair inside the
+    // block (`to_j`), to j's: every term is (f_j − f_i) ⊗ ∇_i W̄ or dx ⊗ ∇_i W̄ times the
+    // partner's volume, the same product for both sides (both factors change sign).
+    let add_pair = |i: usize, j: usize, sums_i: &mut Sums<D>, to_j: Option<&mut Sums<D>>| {
+        let xi = ext.position[i];
+        let dx = ext.position[j] - xi;
+        let dist = dx.norm();
+        // ∇_i W̄ and, for the grad-h factor, each side's own ∂W/∂h times the partner's
+        // mass (j's only when the pair is evaluated for both).
+        let (g, dwdh_i, dwdh_j) = match (grad_h, to_j.is_some()) {
+            (true, true) => {
+                let (g, wi, wj) = pk.grad_and_dw_dh(i, j, -dx, dist);
+                (g, ext.mass[j] * wi, ext.mass[i] * wj)
+            }
+            (true, false) => (
+                pk.grad_at(i, j, -dx, dist),
+                ext.mass[j] * pk.dw_dh_own_at(i, dx, dist),
+                0.0,
+            ),
+            (false, _) => (pk.grad_at(i, j, -dx, dist), 0.0, 0.0),
+        };
+        let dv = ext.velocity[j] - ext.velocity[i];
+        // A decoupled pair (fractured rock separating) shares no velocity gradient;
+        // it still counts in M and ∇P, as in Spheral's FSISPH.
+        let terms = PairGradients {
+            l: (!decoupled(ext, i, j, -dx, -dv)).then(|| D::Tensor::outer(dv, g)),
+            gp: g * (ext.pressure[j] - ext.pressure[i]),
+            ge: (energy && ext.material[i] == ext.material[j])
+                .then(|| g * (ext.specific_energy[j] - ext.specific_energy[i])),
+            // M only where it is used (an outer product per pair).
+            m: moments.then(|| D::Tensor::outer(dx, g)),
+        };
+        terms.add_to(sums_i, ext.mass[j] / eta(j), dwdh_i);
+        if let Some(sums_j) = to_j {
+            terms.add_to(sums_j, ext.mass[i] / eta(i), dwdh_j);
+        }
+    };
+    let finish = |i: usize, s: &Sums<D>| -> (Gradients<D>, D::Tensor) {
+        let omega = if grad_h {
+            1.0 + pk.h(i) / (d * eta(i)) * s.dwdh
+        } else {
+            1.0
+        };
+        // L = L_raw M⁻¹ and ∇P = M⁻ᵀ ∇P_raw are exact for linear fields. A nearly
+        // singular M (a particle with too few neighbours) keeps the raw estimates.
+        // M⁻¹ when either use wants it: the continuity equation and reconstruction
+        // (`correct`), and the strain rate that drives the deviatoric stress.
+        let inv = if moments {
+            well_conditioned_inverse(&s.m)
+        } else {
+            None
+        };
+        let l = s.l;
+        let strain_velocity = match (correct_strain, inv) {
+            (true, Some(mi)) => l.mul_tensor(&mi),
+            _ => l,
+        };
+        let c = inv.map_or(D::Tensor::IDENTITY, |mi| mi.transpose());
+        match (correct, inv) {
+            (true, Some(mi)) => (
+                Gradients {
+                    velocity: l.mul_tensor(&mi),
+                    pressure: mi.transpose().mul_vec(s.gp),
+                    omega,
+                    strain_velocity,
+                    energy: mi.transpose().mul_vec(s.ge),
+                },
+                c,
+            ),
+            _ => (
+                Gradients {
+                    velocity: l,
+                    pressure: s.gp,
+                    omega,
+                    strain_velocity,
+                    energy: s.ge,
+                },
+                c,
+            ),
+        }
+    };
+    // Each block of rows sums its pairs (pair_blocks.rs), then finishes its rows.
+    let n = ext.n_real;
+    let keep = correct || keep_correction;
+    let fill = |b: usize, out: &mut [Gradients<D>], mut corr: Option<&mut [D::Tensor]>| {
+        let (start, end) = (b * rows, b * rows + out.len());
+        let mut sums: Vec<Sums<D>> = (start..end)
+            .map(|i| Sums {
+                l: D::Tensor::ZERO,
+                gp: D::Vector::ZERO,
+                m: D::Tensor::ZERO,
+                ge: D::Vector::ZERO,
+                // Self term of Σ m ∂W/∂h: ∂W(0,h)/∂h = −d W(0,h)/h.
+                dwdh: if grad_h {
+                    -d * ext.mass[i] * pk.w(i, i, D::Vector::ZERO) / pk.h(i)
+                } else {
+                    0.0
+                },
+            })
+            .collect();
+        for i in start..end {
+            for j in list.neighbors(i) {
+                let j = j as usize;
+                match pair_blocks::visit(i, j, start, end) {
+                    pair_blocks::Visit::Done => {}
+                    pair_blocks::Visit::OwnOnly => add_pair(i, j, &mut sums[i - start], None),
+                    pair_blocks::Visit::Both => {
+                        let (lo, hi) = sums.split_at_mut(j - start);
+                        add_pair(i, j, &mut lo[i - start], Some(&mut hi[0]));
+                    }
+                }
+            }
+        }
+        for (k, s) in sums.iter().enumerate() {
+            let (g, c) = finish(start + k, s);
+            out[k] = g;
+            if let Some(corr) = corr.as_deref_mut() {
+                corr[k] = c;
+            }
+        }
+    };
+    let unset = Gradients {
+        velocity: D::Tensor::ZERO,
+        pressure: D::Vector::ZERO,
+        omega: 1.0,
+        strain_velocity: D::Tensor::ZERO,
+        energy: D::Vector::ZERO,
+    };
+    let mut each = vec![unset; n];
+    let mut correction = if keep {
+        vec![D::Tensor::IDENTITY; n]
+    } else {
+        Vec::new()
+    };
+    if keep {
+        each.par_chunks_mut(rows)
+            .zip(correction.par_chunks_mut(rows))
+            .enumerate()
+            .for_each(|(b, (out, corr))| fill(b, out, Some(corr)));
+    } else {
+        each.par_chunks_mut(rows)
+            .enumerate()
+            .for_each(|(b, out)| fill(b, out, None));
+    }
+    GradientSet { each, correction }
+}
+
+/// M⁻¹ if M is invertible and not too far from the identity (condition number of its
+/// symmetric part below 100), else None.
+fn well_conditioned_inverse<T: Tensor>(m: &T) -> Option<T> {
+    let e = m.symmetric().sym_eigen();
+    let n = T::Vector::DIM;
+    let (lo, hi) = (e.values[0], e.values[n - 1]);
+    if !(lo > 0.0) || hi > 100.0 * lo {
+        return None;
+    }
+    m.inverse()
+}
