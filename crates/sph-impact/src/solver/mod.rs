@@ -23,6 +23,7 @@ pub use config::{
 pub use damage::DamageEvents;
 pub use error::SolverError;
 pub use material::Material;
+pub use pair_rules::{NoPairRule, PairRule, PairView};
 pub use simulation::{Conserved, PhaseTimes, Simulation, SolverCheckpoint, StepInfo};
 pub use state::State;
 pub use timestep::TimestepVote;

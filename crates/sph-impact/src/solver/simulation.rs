@@ -20,6 +20,7 @@ use crate::solver::free_flight::{FreeFlight, leaving};
 use crate::solver::material::Material;
 use crate::solver::pair_blocks;
 use crate::solver::pair_kernel::{ScalarPairKernel, TensorPairKernel, equivalent_radius};
+use crate::solver::pair_rules::{NoPairRule, PairRule};
 use crate::solver::state::{Extended, State};
 use crate::solver::timestep::{TimestepVote, acceleration_vote, cfl_vote, density_vote};
 use rayon::prelude::*;
@@ -102,7 +103,7 @@ pub struct StepInfo {
 }
 
 /// A running simulation.
-pub struct Simulation<D: Dimension, K: Kernel> {
+pub struct Simulation<D: Dimension, K: Kernel, R: PairRule<D> = NoPairRule> {
     /// The evolved state.
     pub state: State<D>,
     /// Materials by id.
@@ -144,6 +145,8 @@ pub struct Simulation<D: Dimension, K: Kernel> {
     /// [`Self::set_pair_block_rows`].
     pair_block_rows: Option<usize>,
     kernel: K,
+    /// The user's own pair force (`with_pair_rule`); `NoPairRule` by default.
+    pair_rule: R,
     search: CellList,
     /// The particles in free flight (`SchemeConfig::free_flight_above`).
     flight: FreeFlight<D>,
@@ -271,12 +274,43 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
                 })
             }),
             kernel,
+            pair_rule: NoPairRule,
             search: CellList::new(),
             flight: FreeFlight::default(),
             midpoint: State::default(),
         })
     }
 
+    /// This simulation with `rule`'s force added to every pair's (solver/pair_rules/user.rs):
+    /// the rule is compiled into the pair loop, so the default, `NoPairRule`, costs
+    /// nothing. The rule is not part of a checkpoint: give it again after `restore`.
+    pub fn with_pair_rule<R: PairRule<D>>(self, rule: R) -> Simulation<D, K, R> {
+        Simulation {
+            state: self.state,
+            materials: self.materials,
+            scheme: self.scheme,
+            boundaries: self.boundaries,
+            timings: self.timings,
+            boundary_impulse: self.boundary_impulse,
+            damage_events: self.damage_events,
+            density_floor_events: self.density_floor_events,
+            axis_crossings: self.axis_crossings,
+            axis_crossings_midpoint: self.axis_crossings_midpoint,
+            held: self.held,
+            smoothed_radius: self.smoothed_radius,
+            radius0: self.radius0,
+            first_dt: self.first_dt,
+            pair_block_rows: self.pair_block_rows,
+            kernel: self.kernel,
+            pair_rule: rule,
+            search: self.search,
+            flight: self.flight,
+            midpoint: self.midpoint,
+        }
+    }
+}
+
+impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
     /// Sets the rows per block of the pair passes (None: the automatic size, which
     /// depends on the particle count only). A pair of two particles in one block is
     /// evaluated once for both, any other from each side, so `Some(1)` evaluates every
@@ -408,7 +442,7 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
     /// Calls `f` with the particles in free flight appended to [`Self::state`] at their
     /// present positions (after the particles still in the hydrodynamics, in the order
     /// they left), then takes them out again: how the outputs see every particle.
-    pub fn with_free_flight<R>(&mut self, f: impl FnOnce(&Self) -> R) -> R {
+    pub fn with_free_flight<T>(&mut self, f: impl FnOnce(&Self) -> T) -> T {
         if self.flight.len() == 0 {
             return f(self);
         }

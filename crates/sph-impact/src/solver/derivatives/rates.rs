@@ -4,6 +4,7 @@
 
 use super::switch::viscosity_switch_factors;
 use super::*;
+use crate::solver::pair_rules::{PairRule, PairView};
 
 /// Per-particle time derivatives and time-step ingredients (pass 2).
 #[derive(Clone, Copy, Debug)]
@@ -142,8 +143,9 @@ pub(crate) fn rates<D: Dimension, P: PairKernel<D>>(
     grads: Option<&GradientSet<D>>,
     scheme: &SchemeConfig,
     rows: usize,
+    rule: &impl PairRule<D>,
 ) -> PairRates<D> {
-    per_geometry!(rates_in(ext, list, pk, grads, scheme, rows))
+    per_geometry!(rates_in(ext, list, pk, grads, scheme, rows, rule))
 }
 
 /// [`rates`] for one geometry (`RZ`), fixed at compile time.
@@ -154,6 +156,7 @@ fn rates_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
     grads: Option<&GradientSet<D>>,
     scheme: &SchemeConfig,
     rows: usize,
+    rule: &impl PairRule<D>,
 ) -> PairRates<D> {
     let visc = scheme.viscosity;
     let solid = ext.has_stress();
@@ -459,7 +462,7 @@ fn rates_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
         // The pair force per unit mass of i and of the partner: dv_i/dt gets m_j F and
         // dv_j/dt gets −m_i F, with F = [(σ_i + σ_j)/(η_iη_j) − Π]∇W + the artificial
         // stress, σ = (1 − D) S − P_D I; F is antisymmetric in (i, j) through ∇W.
-        let f_pair = match momentum_corrections {
+        let mut f_pair = match momentum_corrections {
             // σ_i (C_i∇W) + σ_j (C_j∇W), C = M⁻ᵀ (a ghost's is its source's, mapped
             // like a tensor): antisymmetric in (i, j) like the plain form.
             Some(c) if scheme.momentum == MomentumForm::ParticlePressure => {
@@ -487,6 +490,20 @@ fn rates_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
                 f
             }
         };
+        // The user's own pair force (pair_rules/user.rs), compiled away without one.
+        if let Some(f) = rule.force(&PairView {
+            r,
+            dist,
+            r_hat,
+            grad_w: g,
+            velocity: (vi, vj),
+            density: (rhoi, rhoj),
+            pressure: (pi, pj),
+            material: (a.material, ext.material[j]),
+            support: (pk.h(i), pk.h(j)),
+        }) {
+            f_pair += f;
+        }
         let force = f_pair * mj;
         // An unbonded interface (two different materials) carries no tension: a pair
         // whose force would pull i toward j does not interact at all (no force, and

@@ -12,12 +12,14 @@
 //! | artificial stress | `artificial_stress` | `artificial_stress.rs` |
 //! | damage coupling of the deviatoric stresses | `stress_coupling` | `stress_coupling.rs` |
 //! | FSISPH's energy diffusion | `energy_diffusion` | `energy_diffusion.rs` |
+//! | the user's own pair force | `Simulation::with_pair_rule` | `user.rs` |
 
 mod artificial_stress;
 mod decoupling;
 mod density_stabilization;
 mod energy_diffusion;
 mod stress_coupling;
+mod user;
 mod viscosity;
 
 pub(crate) use artificial_stress::artificial_stress;
@@ -25,6 +27,7 @@ pub(crate) use decoupling::decoupled;
 pub(crate) use density_stabilization::{Side, density_stabilization};
 pub(crate) use energy_diffusion::{DiffusionPair, energy_diffusion};
 pub(crate) use stress_coupling::coupled_stresses;
+pub use user::{NoPairRule, PairRule, PairView};
 pub(crate) use viscosity::{ViscosityPair, viscous_pressure};
 
 use crate::solver::state::Extended;

@@ -4,7 +4,7 @@
 
 use super::*;
 
-impl<D: Dimension, K: Kernel> Simulation<D, K> {
+impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
     /// y ← y0 + dt·f(stage), positions with the stage state's own velocities.
     pub(super) fn advance(&self, y: &mut State<D>, y0: &State<D>, stage: &Stage<D>, dt: f64) {
         self.advance_with_velocity(y, &y0.particles.velocity, stage, dt, y0);

@@ -12,6 +12,7 @@ use crate::solver::axisymmetric::Geometry;
 use crate::solver::damage::DamageEvents;
 use crate::solver::error::SolverError;
 use crate::solver::free_flight::FreeFlight;
+use crate::solver::pair_rules::PairRule;
 use crate::solver::simulation::PhaseTimes;
 use crate::solver::state::State;
 use serde::{Deserialize, Serialize};
@@ -49,7 +50,7 @@ pub struct SolverCheckpoint<D: Dimension> {
     pub timings: PhaseTimes,
 }
 
-impl<D: Dimension, K: Kernel> Simulation<D, K> {
+impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
     /// A copy of everything the simulation carries from step to step
     /// ([`SolverCheckpoint`]).
     pub fn checkpoint(&self) -> SolverCheckpoint<D> {

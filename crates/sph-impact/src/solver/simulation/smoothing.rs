@@ -5,7 +5,7 @@
 
 use super::*;
 
-impl<D: Dimension, K: Kernel> Simulation<D, K> {
+impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
     /// Updates the smoothing of `y` (after its density) over a stage of length `dt` with
     /// `stage`'s rates, evaluated on `rate_state`.
     pub(super) fn update_smoothing(

@@ -21,7 +21,7 @@ pub(super) struct Stage<D: Dimension> {
     pub(super) tensor_rates: Vec<TensorRate>,
 }
 
-impl<D: Dimension, K: Kernel> Simulation<D, K> {
+impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
     /// Particle spacing Δx_i = (smallest support semi-axis)/n_target.
     pub(super) fn spacing(&self, state: &State<D>, i: usize) -> f64 {
         let h_min = if state.h_tensor.is_empty() {
@@ -210,7 +210,15 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
             let pk = ScalarPairKernel::new(self.kernel, &ext.h, D::DIM);
             let g = need_grads.then(|| gradients(&ext, &list, &pk, options, rows));
             let t3 = Instant::now();
-            let r = rates(&ext, &list, &pk, g.as_ref(), &self.scheme, rows);
+            let r = rates(
+                &ext,
+                &list,
+                &pk,
+                g.as_ref(),
+                &self.scheme,
+                rows,
+                &self.pair_rule,
+            );
             (g, r, t3)
         } else {
             let pk = TensorPairKernel {
@@ -220,7 +228,15 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
             };
             let g = need_grads.then(|| gradients(&ext, &list, &pk, options, rows));
             let t3 = Instant::now();
-            let r = rates(&ext, &list, &pk, g.as_ref(), &self.scheme, rows);
+            let r = rates(
+                &ext,
+                &list,
+                &pk,
+                g.as_ref(),
+                &self.scheme,
+                rows,
+                &self.pair_rule,
+            );
             (g, r, t3)
         };
         let PairRates {

@@ -4,7 +4,7 @@
 
 use super::*;
 
-impl<D: Dimension, K: Kernel> Simulation<D, K> {
+impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
     /// The strength model's view of particle i at the given pressure.
     pub(super) fn strength_state(
         &self,
