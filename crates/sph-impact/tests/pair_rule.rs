@@ -84,7 +84,9 @@ fn check<D: Dimension>(
     let total_0 = momenta(&glued).1;
     run(&mut glued, &dts);
     let (p_glued, total_glued) = momenta(&glued);
-    eprintln!("p_z projectile: {p_plain:e} plain, {p_glued:e} glued; total {total_0:e} → {total_glued:e}");
+    eprintln!(
+        "p_z projectile: {p_plain:e} plain, {p_glued:e} glued; total {total_0:e} → {total_glued:e}"
+    );
     // The target pulls the projectile (moving in −z into it) on: its momentum grows
     // more negative than without the glue.
     assert!(

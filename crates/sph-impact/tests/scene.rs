@@ -460,12 +460,22 @@ fn smoke_scene_runs_end_to_end() {
         "steps",
         "wall_time_s",
         "particle_steps_per_s",
+        "neighbours_per_particle",
         "version",
         "scene",
     ] {
         assert!(json.get(key).is_some(), "summary.json lacks {key}");
     }
     assert_eq!(json["scene"]["body"][1]["name"], "target");
+    // The mean row length: a 3-D support of n_target 2.5 holds about 65 neighbours in
+    // the bulk (docs/performance.md), fewer at the bodies' surfaces.
+    let npp = summary.neighbours_per_particle;
+    let t = summary.timings;
+    assert_eq!(
+        npp,
+        t.neighbour_entries as f64 / t.derivative_evaluations as f64
+    );
+    assert!((20.0..70.0).contains(&npp), "{npp} neighbours per particle");
     // β's change over the second half is read from the history as written: the row
     // nearest half the end time against the last row.
     let tb: Vec<(f64, f64)> = std::fs::read_to_string(dir.join("history.csv"))

@@ -132,6 +132,7 @@ impl Job<'_> {
                 .sum(),
             setup,
             geometry: D::KIND,
+            copies,
             reference: None,
             target_density,
             axis: None,

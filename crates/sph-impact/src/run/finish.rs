@@ -163,6 +163,8 @@ pub(crate) fn summarise<D: SceneDimension>(
         end_time_s: job.end_time,
         wall_time_s: 0.0,
         particle_steps_per_s: particle_steps as f64 / stepping.max(1e-12),
+        neighbours_per_particle: sim.timings.neighbour_entries as f64
+            / sim.timings.derivative_evaluations as f64,
         threads: job.threads,
         resolution_scale: job.options.resolution_scale,
         version: env!("CARGO_PKG_VERSION").to_owned(),

@@ -21,6 +21,10 @@ pub(crate) struct Measurer {
     pub initial_target_momentum_z: f64,
     /// 3-D or RZ (how the distance from the axis is measured).
     pub geometry: GeometryKind,
+    /// How many mirror copies each particle's mass in the measured arrays stands for (4
+    /// in a 3-D quarter model, else 1): the `copies` the arrays were made with
+    /// (`Arrays::of`).
+    pub copies: f64,
     /// The untouched target's crater profile at t = 0, which later profiles are read
     /// against ([`Measurer::calibrate`]); `None` before calibration.
     pub reference: Option<CraterProfile>,
@@ -108,6 +112,8 @@ impl Measurer {
         let mut o = CraterOptions::new(self.diagnostic_geometry(), self.setup.crater_bin);
         o.depth_threshold = self.setup.crater_depth_threshold;
         o.footprint = true;
+        // A quarter model's particle carries its four mirror copies' mass (`Arrays`).
+        o.copies = self.copies;
         o.spall_damage = self.setup.spall_damage;
         o.density_cut = self.setup.rubble_density.map(|f| DensityCut {
             reference_density: self.target_density,
@@ -213,6 +219,7 @@ mod tests {
             projectile_mass: 1.0,
             initial_target_momentum_z: 0.0,
             geometry: GeometryKind::Rz,
+            copies: 1.0,
             reference: None,
             target_density: 2876.0,
             axis: None,

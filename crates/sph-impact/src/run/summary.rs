@@ -139,6 +139,9 @@ pub struct RunSummary {
     pub wall_time_s: f64,
     /// Particles × steps / wall time of the stepping.
     pub particle_steps_per_s: f64,
+    /// Mean number of neighbours a particle's row listed, over every derivative
+    /// evaluation of the run (ghosts of walls included).
+    pub neighbours_per_particle: f64,
     /// Worker threads.
     pub threads: usize,
     /// Particle spacings were divided by this.

@@ -61,6 +61,10 @@ pub struct PhaseTimes {
     pub integration: f64,
     /// Particle-derivative evaluations (particles × stages).
     pub derivative_evaluations: u64,
+    /// Neighbours listed for those particles, summed over the evaluations: the mean
+    /// neighbour count is this over `derivative_evaluations`.
+    #[serde(default)]
+    pub neighbour_entries: u64,
 }
 
 impl PhaseTimes {

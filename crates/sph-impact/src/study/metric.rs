@@ -37,6 +37,7 @@ pub const SUMMARY_KEYS: &[&str] = &[
     "end_time_s",
     "wall_time_s",
     "particle_steps_per_s",
+    "neighbours_per_particle",
     "threads",
     "resolution_scale",
     "version",

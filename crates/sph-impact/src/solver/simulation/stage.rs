@@ -315,6 +315,7 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
         self.timings.gradients += (t3 - t2).as_secs_f64();
         self.timings.pairs += (t4 - t3).as_secs_f64();
         self.timings.derivative_evaluations += n_real as u64;
+        self.timings.neighbour_entries += (0..n_real).map(|i| list.count(i) as u64).sum::<u64>();
         let mut pressure_d = std::mem::take(&mut ext.pressure);
         pressure_d.truncate(n_real);
         Ok((
