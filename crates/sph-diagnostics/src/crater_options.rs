@@ -46,6 +46,13 @@ pub struct CraterOptions {
     /// (docs/diagnostics.md §4.1).
     #[serde(default)]
     pub footprint: bool,
+    /// How many mirror copies each particle's mass in the view stands for (≥ 1; default
+    /// 1): 4 for a 3-D quarter model, whose particles carry the mass of their four
+    /// mirror images so that totals are the whole body's. The footprint's spacing is one
+    /// copy's size, (m/(copies ρ))^(1/3); the whole mass would widen every footprint by
+    /// 4^(1/3) and read a shallower floor (docs/diagnostics.md §4.1).
+    #[serde(default = "one_copy")]
+    pub copies: f64,
     /// Optional low-density cut (needs densities in the view).
     pub density_cut: Option<DensityCut>,
     /// Optional: particles with damage above this are not wall (needs damage in the view).
@@ -62,6 +69,11 @@ pub struct CraterOptions {
     pub spall_damage: Option<f64>,
 }
 
+/// The serde default of [`CraterOptions::copies`]: a particle stands for itself.
+fn one_copy() -> f64 {
+    1.0
+}
+
 impl CraterOptions {
     /// Default fraction of the crater depth that defines the bowl.
     pub const DEFAULT_BOWL_FRACTION: f64 = 0.5;
@@ -76,6 +88,7 @@ impl CraterOptions {
             bowl_fraction: Self::DEFAULT_BOWL_FRACTION,
             top_offset: 0.0,
             footprint: false,
+            copies: 1.0,
             density_cut: None,
             max_damage: None,
             spall_damage: None,
@@ -87,6 +100,13 @@ impl CraterOptions {
         positive("bin", self.bin)?;
         finite("depth_threshold", self.depth_threshold)?;
         finite("top_offset", self.top_offset)?;
+        if !(self.copies >= 1.0 && self.copies.is_finite()) {
+            return Err(ImpactError::BadParameter {
+                name: "copies",
+                value: self.copies,
+                reason: "must be finite and ≥ 1 (mirror copies per particle)",
+            });
+        }
         if !(self.bowl_fraction > 0.0 && self.bowl_fraction <= 1.0) {
             return Err(ImpactError::BadParameter {
                 name: "bowl_fraction",
@@ -140,6 +160,11 @@ mod tests {
         assert_eq!(o.check(), Ok(()));
         let bad = [
             CraterOptions { bin: 0.0, ..o },
+            CraterOptions { copies: 0.5, ..o },
+            CraterOptions {
+                copies: f64::INFINITY,
+                ..o
+            },
             CraterOptions {
                 bowl_fraction: 0.0,
                 ..o

@@ -151,7 +151,7 @@ pub fn crater_profile(
             let s = options.geometry.radius(p);
             let half = match view.density {
                 Some(rho) if options.footprint => {
-                    0.5 * spacing(options.geometry, s, view.mass[i], rho[i])
+                    0.5 * spacing(options.geometry, s, view.mass[i] / options.copies, rho[i])
                 }
                 _ => 0.0,
             };
@@ -352,6 +352,30 @@ mod tests {
             crater_profile(&bare, &c, &wide),
             Err(ImpactError::MissingField("density"))
         );
+    }
+
+    #[test]
+    fn a_quarter_models_footprint_is_one_copys_size() {
+        // A pit on the axis (top at z = −5) beside a unit cube at s = 1.6 with its top
+        // at z = 0; the view carries the cube's four mirror copies' mass, 4.
+        let p = [[0.0, 0.0, -5.0], [1.6, 0.0, 0.0]];
+        let (v, b, m, rho) = ([[0.0; 3]; 2], [1u16; 2], [4.0, 4.0], [1.0; 2]);
+        let view = ParticleView::new(&p, &v, &m, &b).with_density(&rho);
+        let c = EjectaCriterion::new(&[1], 0.0);
+        let whole = CraterOptions {
+            footprint: true,
+            ..CraterOptions::new(Geometry::ThreeD, 1.0)
+        };
+        // Read as one particle of volume 4 (side 1.587), the cube reaches into the axis
+        // bin and hides the pit.
+        assert_eq!(crater_profile(&view, &c, &whole).unwrap().depth[0], 0.0);
+        // As one copy of volume 1 it covers [1.1, 2.1): bins 1 and 2 only.
+        let quarter = CraterOptions {
+            copies: 4.0,
+            ..whole
+        };
+        let d = crater_profile(&view, &c, &quarter).unwrap().depth;
+        assert_eq!(d, vec![5.0, 0.0, 0.0]);
     }
 
     #[test]
