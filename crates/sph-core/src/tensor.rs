@@ -7,7 +7,7 @@
 //! `A − (tr A / DIM) I`. Stress in reduced dimensions (plane strain, RZ) needs the
 //! out-of-plane normal component as well; the solid-dynamics stress type carries it.
 
-use crate::eigen::{SymEigen, sym_eigen2, sym_eigen3};
+use crate::eigen::{SymEigen, sym_eigen2, sym_eigen3, sym_eigenvalues2, sym_eigenvalues3};
 use crate::vector::Vector;
 use glam::{DMat2, DMat3, DVec2, DVec3};
 use std::fmt::Debug;
@@ -54,6 +54,9 @@ pub trait Tensor:
     /// Eigen-decomposition of the symmetric part (the tensor is assumed symmetric;
     /// only the upper triangle is read). Eigenvalues ascending.
     fn sym_eigen(&self) -> SymEigen<Self>;
+    /// The eigenvalues of [`Self::sym_eigen`], bit for bit, without the eigenvectors
+    /// (less work: no accumulated rotations in 3-D, no angle in 2-D).
+    fn sym_eigenvalues(&self) -> [f64; 3];
 
     /// Outer product `a ⊗ b`, entry (i, j) = a_i b_j.
     #[inline]
@@ -152,6 +155,10 @@ impl Tensor for f64 {
             vectors: 1.0,
         }
     }
+    #[inline]
+    fn sym_eigenvalues(&self) -> [f64; 3] {
+        [*self, 0.0, 0.0]
+    }
 }
 
 impl Tensor for DMat2 {
@@ -190,6 +197,10 @@ impl Tensor for DMat2 {
     #[inline]
     fn sym_eigen(&self) -> SymEigen<Self> {
         sym_eigen2(self.x_axis.x, self.y_axis.x, self.y_axis.y)
+    }
+    #[inline]
+    fn sym_eigenvalues(&self) -> [f64; 3] {
+        sym_eigenvalues2(self.x_axis.x, self.y_axis.x, self.y_axis.y)
     }
 }
 
@@ -233,6 +244,14 @@ impl Tensor for DMat3 {
     #[inline]
     fn sym_eigen(&self) -> SymEigen<Self> {
         sym_eigen3([
+            [self.x_axis.x, self.y_axis.x, self.z_axis.x],
+            [self.y_axis.x, self.y_axis.y, self.z_axis.y],
+            [self.z_axis.x, self.z_axis.y, self.z_axis.z],
+        ])
+    }
+    #[inline]
+    fn sym_eigenvalues(&self) -> [f64; 3] {
+        sym_eigenvalues3([
             [self.x_axis.x, self.y_axis.x, self.z_axis.x],
             [self.y_axis.x, self.y_axis.y, self.z_axis.y],
             [self.z_axis.x, self.z_axis.y, self.z_axis.z],

@@ -115,12 +115,12 @@ impl DamageInput {
 }
 
 /// σ_1: the largest eigenvalue of a symmetric stress tensor (tension positive), from
-/// sph-core's eigen-decomposition. For 2-D tensors the out-of-plane normal stress of
+/// sph-core's eigen-solver (values only). For 2-D tensors the out-of-plane normal stress of
 /// plane strain or RZ is not included; take the max with it where it exists.
 pub fn max_principal_stress<T: Tensor>(stress: &T) -> f64 {
     let dim = <T::Vector as Vector>::DIM;
     // Eigenvalues are ascending over the first DIM entries.
-    stress.sym_eigen().values[dim - 1]
+    stress.sym_eigenvalues()[dim - 1]
 }
 
 /// The variable s the solver integrates; D = s^p.

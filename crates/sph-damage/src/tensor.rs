@@ -62,7 +62,7 @@ pub fn projected_damage(damage: &DMat3, n: DVec3) -> f64 {
 /// damaged pressure, the damaged yield strength and the output (module docs).
 #[inline]
 pub fn largest_damage(damage: &DMat3) -> f64 {
-    damage.sym_eigen().values[2].clamp(0.0, 1.0)
+    damage.sym_eigenvalues()[2].clamp(0.0, 1.0)
 }
 
 /// The growth of one principal direction, from one evaluation of the damage model.

@@ -75,18 +75,18 @@ impl<'a, T: Tensor> TensorSupport<'a, T> {
         let n = T::Vector::DIM;
         let mut radius = Vec::with_capacity(h.len());
         for (index, t) in h.iter().enumerate() {
-            let eig = t.sym_eigen();
+            let values = t.sym_eigenvalues();
             // Symmetric up to round-off relative to the tensor's size (entry-relative
             // tolerances reject near-zero off-diagonals that differ by 1e-17).
             let scale = t.frobenius_norm();
             let symmetric = (0..n).all(|i| {
                 (0..n).all(|j| (t.component(i, j) - t.component(j, i)).abs() <= 1e-12 * scale)
             });
-            let lmin = eig.values[0];
+            let lmin = values[0];
             if !symmetric || !t.all_finite() || !(lmin > 0.0) {
                 return Err(CoreError::BadSupportTensor {
                     index,
-                    eigenvalues: eig.values,
+                    eigenvalues: values,
                 });
             }
             // Slight enlargement keeps the grid conservative against the round-off of the

@@ -64,6 +64,22 @@ proptest! {
     }
 
     #[test]
+    fn eigenvalues_alone_are_those_of_the_decomposition_bit_for_bit(
+        a in proptest::array::uniform6(-1.0e3f64..1.0e3),
+        repeated in -10.0f64..10.0,
+        angle in 0.0f64..6.0,
+    ) {
+        let r = DMat3::from_axis_angle(DVec3::new(0.3, -0.5, 0.8).normalize(), angle);
+        let twice = r * DMat3::from_diagonal(DVec3::new(repeated, repeated, a[0])) * r.transpose();
+        for m in [sym3(a), twice] {
+            prop_assert_eq!(m.sym_eigenvalues().map(f64::to_bits), m.sym_eigen().values.map(f64::to_bits));
+        }
+        let m2 = DMat2::from_cols(DVec2::new(a[0], a[1]), DVec2::new(a[1], a[2]));
+        prop_assert_eq!(m2.sym_eigenvalues().map(f64::to_bits), m2.sym_eigen().values.map(f64::to_bits));
+        prop_assert_eq!(Tensor::sym_eigenvalues(&a[3]), Tensor::sym_eigen(&a[3]).values);
+    }
+
+    #[test]
     fn eigen2_matches_nalgebra(a in -1.0e3f64..1.0e3, b in -1.0e3f64..1.0e3, d in -1.0e3f64..1.0e3) {
         let m = DMat2::from_cols(DVec2::new(a, b), DVec2::new(b, d));
         let e = m.sym_eigen();

@@ -276,9 +276,9 @@ fn gradients_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
 /// M⁻¹ if M is invertible and not too far from the identity (condition number of its
 /// symmetric part below 100), else None.
 fn well_conditioned_inverse<T: Tensor>(m: &T) -> Option<T> {
-    let e = m.symmetric().sym_eigen();
+    let values = m.symmetric().sym_eigenvalues();
     let n = T::Vector::DIM;
-    let (lo, hi) = (e.values[0], e.values[n - 1]);
+    let (lo, hi) = (values[0], values[n - 1]);
     if !(lo > 0.0) || hi > 100.0 * lo {
         return None;
     }

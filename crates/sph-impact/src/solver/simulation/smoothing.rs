@@ -49,7 +49,7 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
                             let measure = self.kernel_measure(m[i], p.position[i], rho[i]);
                             (n_target * measure.powf(1.0 / d)).min(cap * n_target * s0[i])
                         } else {
-                            1.0 / h_src[i].sym_eigen().values[0]
+                            1.0 / h_src[i].sym_eigenvalues()[0]
                         };
                         asph_update(
                             &y.h_tensor[i],

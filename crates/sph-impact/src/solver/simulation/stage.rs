@@ -27,7 +27,7 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
         let h_min = if state.h_tensor.is_empty() {
             state.particles.smoothing_length[i]
         } else {
-            1.0 / state.h_tensor[i].sym_eigen().values[D::DIM - 1]
+            1.0 / state.h_tensor[i].sym_eigenvalues()[D::DIM - 1]
         };
         h_min / self.scheme.n_target
     }
@@ -49,7 +49,7 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
             state
                 .h_tensor
                 .iter()
-                .map(|h| 1.0 / h.sym_eigen().values[0])
+                .map(|h| 1.0 / h.sym_eigenvalues()[0])
                 .collect()
         };
         // A solid's signal speed in the pair's Riemann problem and viscosity is the
