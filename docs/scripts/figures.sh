@@ -10,8 +10,8 @@
 #   docs/scripts/figures.sh RUNS_DIR
 #
 # Each run goes to RUNS_DIR/NAME, one thread, with checkpoints; a finished run (its
-# summary.json exists) is not run again and a stopped one resumes from its newest
-# checkpoint, so the script can be stopped and started again. On this project's two-core
+# summary.json says "complete": true) is not run again and a stopped one resumes from its
+# newest checkpoint, so the script can be stopped and started again. On this project's two-core
 # machine the runs take about 4.5 h on one thread (0.25 mm RZ about 2.8 h, the 3-D quarter
 # about 1.4 h, from the wall times in docs/validation.md); RUNS_DIR belongs outside the repository.
 set -euo pipefail
@@ -25,7 +25,8 @@ bin=target/release/sph-impact
 # run NAME SCENE SCALE: the scene at --resolution-scale SCALE into RUNS_DIR/NAME.
 run() {
     local dir="$runs/$1"
-    if [[ -f "$dir/summary.json" ]]; then
+    # A stopped run also writes summary.json, with "complete": false.
+    if grep -q '"complete": true' "$dir/summary.json" 2> /dev/null; then
         echo "$1: finished, kept"
         return
     fi
