@@ -19,7 +19,9 @@ use crate::solver::error::SolverError;
 use crate::solver::free_flight::{FreeFlight, leaving};
 use crate::solver::material::Material;
 use crate::solver::pair_blocks;
-use crate::solver::pair_kernel::{ScalarPairKernel, TensorPairKernel, equivalent_radius};
+use crate::solver::pair_kernel::{
+    PairKernel, ScalarPairKernel, TensorPairKernel, equivalent_radius,
+};
 use crate::solver::pair_rules::{NoPairRule, PairRule};
 use crate::solver::state::{Extended, State};
 use crate::solver::timestep::{TimestepVote, acceleration_vote, cfl_vote, density_vote};

@@ -885,16 +885,17 @@ pub fn run_fit_with(
         .min_by(|a, b| a.objective.total_cmp(&b.objective))
         .map(|e| e.index);
     let mut sensitivity = Vec::new();
+    let mut hold_out = Vec::new();
     if let (Some(b), false) = (best, stopped) {
-        // Per best run, so that a search continued with a larger budget, whose best
-        // point may move, does not meet the steps of another point.
-        let root = dir.join("sensitivity").join(format!("run-{b:04}"));
         let u_best: Vec<f64> = fit
             .free
             .iter()
             .zip(&runs[b].values)
             .map(|(f, &v)| f.unit(v))
             .collect();
+        // Per best run, so that a search continued with a larger budget, whose best
+        // point may move, does not meet the steps of another point.
+        let root = dir.join("sensitivity").join(format!("run-{b:04}"));
         for k in 0..fit.free.len() {
             let mut u = u_best.clone();
             u[k] += if u[k] + SENSITIVITY_STEP <= 1.0 {
@@ -911,20 +912,11 @@ pub fn run_fit_with(
                 .collect();
             sensitivity.push((e, elasticity));
         }
-    }
-    let mut hold_out = Vec::new();
-    if let (Some(b), false) = (best, stopped) {
         let held: Vec<Option<usize>> = (0..fit.cases.len())
             .filter(|&c| fit.cases[c].hold_out)
             .map(Some)
             .collect();
         let root = dir.join("hold_out").join(format!("run-{b:04}"));
-        let u_best: Vec<f64> = fit
-            .free
-            .iter()
-            .zip(&runs[b].values)
-            .map(|(f, &v)| f.unit(v))
-            .collect();
         let point = fit.point(0, &u_best);
         if let Some(status) = search.run_cases(&root, &point, &held)? {
             for (&c, &st) in held.iter().zip(&status) {

@@ -22,6 +22,30 @@ pub(super) struct Stage<D: Dimension> {
 }
 
 impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
+    /// Pass 1 (when `options` asks for it) and pass 2 with the pair kernel `pk`, and
+    /// the instant pass 2 began.
+    fn pair_passes<P: PairKernel<D>>(
+        &self,
+        ext: &Extended<'_, D>,
+        list: &NeighborList,
+        pk: &P,
+        options: Option<GradientOptions>,
+        rows: usize,
+    ) -> (Option<GradientSet<D>>, PairRates<D>, Instant) {
+        let g = options.map(|o| gradients(ext, list, pk, o, rows));
+        let t3 = Instant::now();
+        let r = rates(
+            ext,
+            list,
+            pk,
+            g.as_ref(),
+            &self.scheme,
+            rows,
+            &self.pair_rule,
+        );
+        (g, r, t3)
+    }
+
     /// Particle spacing Δx_i = (smallest support semi-axis)/n_target.
     pub(super) fn spacing(&self, state: &State<D>, i: usize) -> f64 {
         let h_min = if state.h_tensor.is_empty() {
@@ -208,36 +232,14 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
             .unwrap_or_else(|| pair_blocks::block_rows(ext.n_real));
         let (grads, rates_out, t3) = if ext.h_tensor.is_empty() {
             let pk = ScalarPairKernel::new(self.kernel, &ext.h, D::DIM);
-            let g = need_grads.then(|| gradients(&ext, &list, &pk, options, rows));
-            let t3 = Instant::now();
-            let r = rates(
-                &ext,
-                &list,
-                &pk,
-                g.as_ref(),
-                &self.scheme,
-                rows,
-                &self.pair_rule,
-            );
-            (g, r, t3)
+            self.pair_passes(&ext, &list, &pk, need_grads.then_some(options), rows)
         } else {
             let pk = TensorPairKernel {
                 kernel: self.kernel,
                 h_tensor: &ext.h_tensor,
                 h: &ext.h,
             };
-            let g = need_grads.then(|| gradients(&ext, &list, &pk, options, rows));
-            let t3 = Instant::now();
-            let r = rates(
-                &ext,
-                &list,
-                &pk,
-                g.as_ref(),
-                &self.scheme,
-                rows,
-                &self.pair_rule,
-            );
-            (g, r, t3)
+            self.pair_passes(&ext, &list, &pk, need_grads.then_some(options), rows)
         };
         let PairRates {
             each: mut rates_out,
