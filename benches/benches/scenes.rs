@@ -12,12 +12,17 @@
 //! cargo bench -p sph-benches --bench scenes -- rz           # one of them: 3d or rz
 //! cargo bench -p sph-benches --bench scenes -- 3d --quick   # 3-D at A_res 2 mm, 2 steps
 //! cargo bench -p sph-benches --bench scenes -- 3d --search  # ten searches, no steps
+//! cargo bench -p sph-benches --bench scenes -- rz --each-step # one search per RK2 step
 //! ```
+//!
+//! `--each-step` sets `[solver] neighbour_search = "each-step"` over the scene's own
+//! settings (`SchemeConfig::neighbour_search`).
 
 use sph_benches::{Counting, LIVE, PEAK, peak_rss};
 use sph_core::{CellList, NeighborSearch, ScalarSupport};
 use sph_impact::Simulation;
 use sph_impact::scene::{Scene, SceneSimulation};
+use sph_impact::solver::NeighbourSearch;
 use sph_kernel::KernelChoice;
 use std::path::Path;
 use std::sync::atomic::Ordering;
@@ -34,6 +39,8 @@ struct Case {
     resolution_scale: f64,
     warm_up: usize,
     steps: usize,
+    /// One neighbour search per RK2 step instead of one per stage.
+    each_step: bool,
 }
 
 /// What one thread count measured.
@@ -113,7 +120,11 @@ fn scene_of(case: &Case) -> Scene {
     let path = Path::new(env!("CARGO_MANIFEST_DIR"))
         .join("../examples/scenes")
         .join(case.file);
-    Scene::from_toml_file(&path).expect("scene")
+    let mut scene = Scene::from_toml_file(&path).expect("scene");
+    if case.each_step {
+        scene.solver.neighbour_search = Some(NeighbourSearch::EachStep);
+    }
+    scene
 }
 
 fn run_case(case: &Case) {
@@ -121,13 +132,18 @@ fn run_case(case: &Case) {
     // The bundled scenes place at A_res = 0.5 mm (the study's) at scale 1.
     println!(
         "\n{} basalt impact, 3.9 km/s, A_res {} mm ({}, --resolution-scale {}): {} RK2 steps \
-         after {} warm-up steps",
+         after {} warm-up steps, neighbours searched {}",
         case.label,
         0.5 / case.resolution_scale,
         case.file,
         case.resolution_scale,
         case.steps,
-        case.warm_up
+        case.warm_up,
+        if case.each_step {
+            "once per step"
+        } else {
+            "at each stage"
+        }
     );
     let mut rates = Vec::new();
     for threads in [1, 2] {
@@ -232,6 +248,7 @@ fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();
     let quick = args.iter().any(|a| a == "--quick");
     let search = args.iter().any(|a| a == "--search");
+    let each_step = args.iter().any(|a| a == "--each-step");
     let want = |name: &str| {
         let picked: Vec<&String> = args.iter().filter(|a| *a == "3d" || *a == "rz").collect();
         picked.is_empty() || picked.iter().any(|a| *a == name)
@@ -245,6 +262,7 @@ fn main() {
                 resolution_scale: if quick { 0.25 } else { 0.5 },
                 warm_up: if quick { 1 } else { 2 },
                 steps: if quick { 2 } else { 4 },
+                each_step,
             },
         ),
         (
@@ -255,6 +273,7 @@ fn main() {
                 resolution_scale: if quick { 0.5 } else { 1.0 },
                 warm_up: 20,
                 steps: if quick { 50 } else { 400 },
+                each_step,
             },
         ),
     ];

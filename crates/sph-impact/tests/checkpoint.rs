@@ -103,6 +103,32 @@ fn a_resumed_rz_run_repeats_the_uninterrupted_one_bit_for_bit() {
     assert_same_outputs((&whole, &a), (&resumed, &b), "snapshots/00004.vtu");
 }
 
+/// With one neighbour search per step (`neighbour_search = "each-step"`) too: the list
+/// and ghosts kept for the midpoint live within a step, so a checkpoint holds nothing
+/// more.
+#[test]
+fn a_resumed_run_with_one_search_per_step_repeats_the_uninterrupted_one() {
+    let text = std::fs::read_to_string(scene_file("smoke_rz.toml")).unwrap();
+    let text = text.replacen(
+        "[solver]\n",
+        "[solver]\nneighbour_search = \"each-step\"\n",
+        1,
+    );
+    let scene = Scene::from_toml_str(&text, "smoke_rz.toml").unwrap();
+    assert_eq!(
+        scene.scheme().neighbour_search,
+        sph_impact::solver::NeighbourSearch::EachStep
+    );
+    let end = Some(0.5e-6);
+    let whole = fresh("checkpoint-each-step-whole");
+    let a = run(&scene, &whole, &options(2, end, true, false)).unwrap();
+    let resumed = fresh("checkpoint-each-step-resumed");
+    copy_dir(&whole, &resumed);
+    let b = run(&scene, &resumed, &options(1, end, false, true)).unwrap();
+    assert_eq!(b.resumed_from_s.len(), 1);
+    assert_same_outputs((&whole, &a), (&resumed, &b), "snapshots/00002.vtu");
+}
+
 #[test]
 fn a_finished_run_extended_to_a_later_end_equals_one_run_to_it() {
     let scene = rz_scene();

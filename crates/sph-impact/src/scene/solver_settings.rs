@@ -3,7 +3,8 @@
 //! keeps the value of [`study_scheme`].
 
 use crate::solver::{
-    CrackLength, DensityForm, EnergyForm, MomentumForm, SchemeConfig, SmoothingMode, YieldPressure,
+    CrackLength, DensityForm, EnergyForm, MomentumForm, NeighbourSearch, SchemeConfig,
+    SmoothingMode, YieldPressure,
 };
 use serde::{Deserialize, Serialize};
 use sph_damage::StressCoupling;
@@ -55,7 +56,8 @@ pub enum Preset {
 /// | `energy_diffusion`, `density_stabilization` | 0.1, 0.1 | specificThermalEnergyDiffusionCoefficient, densityStabilizationCoefficient (defaults 0.1) |
 ///
 /// The viscosity coefficients, CFL number, artificial stress and smoothing stay the
-/// study's (α = β = 1, 0.25, ε = 0.2, n = 4).
+/// study's (α = β = 1, 0.25, ε = 0.2, n = 4), and the neighbour search stays at each
+/// stage (Spheral's once per step is `neighbour_search = "each-step"`).
 pub fn fsisph_scheme(base: SchemeConfig) -> SchemeConfig {
     let mut s = base;
     s.damaged_moduli = true;
@@ -226,6 +228,10 @@ pub struct SolverSettings {
     /// FSISPH's density stabilisation coefficient (0 off).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub density_stabilization: Option<f64>,
+    /// When the neighbour list is built: `each-stage` (default) or `each-step` (once per
+    /// RK2 step, as Spheral does).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub neighbour_search: Option<NeighbourSearch>,
     /// How Benz–Asphaug flaws are dealt: `3d-count` (default) or `body-count`.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub flaw_dealing: Option<FlawDealing>,
@@ -278,7 +284,8 @@ impl SolverSettings {
             yield_pressure,
             crack_length,
             energy_diffusion,
-            density_stabilization
+            density_stabilization,
+            neighbour_search
         );
         if let Some(z) = self.free_flight_above {
             s.free_flight_above = Some(z);

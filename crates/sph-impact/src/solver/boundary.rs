@@ -63,6 +63,21 @@ pub(crate) struct Ghost<D: Dimension> {
     pub position: D::Vector,
     /// Linear map applied to vectors (reflection or identity).
     pub map: D::Tensor,
+    /// The position's affine part: `position = map · x_source + offset`, so that the
+    /// same ghost can be placed again from its source's later position (a neighbour
+    /// list kept for the step's second stage, `SchemeConfig::neighbour_search`).
+    pub offset: D::Vector,
+}
+
+impl<D: Dimension> Ghost<D> {
+    /// The same ghost of a source now at `x`.
+    #[inline]
+    pub fn moved_to(&self, x: D::Vector) -> Self {
+        Ghost {
+            position: self.map.mul_vec(x) + self.offset,
+            ..*self
+        }
+    }
 }
 
 impl<D: Dimension> Boundary<D> {
@@ -115,6 +130,8 @@ impl<D: Dimension> Boundary<D> {
         match *self {
             Boundary::Wall { point, normal } | Boundary::Contact { point, normal } => {
                 let reflect = D::Tensor::IDENTITY - D::Tensor::outer(normal, normal) * 2.0;
+                // x − 2 n ((x − p)·n) = R x + 2 n (p·n).
+                let offset = normal * (2.0 * point.dot(normal));
                 for (k, &x) in positions.iter().enumerate() {
                     let d = (x - point).dot(normal);
                     if d < radius[k] {
@@ -122,6 +139,7 @@ impl<D: Dimension> Boundary<D> {
                             source: k,
                             position: x - normal * (2.0 * d),
                             map: reflect,
+                            offset,
                         });
                     }
                 }
@@ -137,10 +155,12 @@ impl<D: Dimension> Boundary<D> {
                     } else {
                         continue;
                     };
+                    let offset = D::Vector::unit(axis) * shift;
                     out.push(Ghost {
                         source: k,
-                        position: x + D::Vector::unit(axis) * shift,
+                        position: x + offset,
                         map: D::Tensor::IDENTITY,
+                        offset,
                     });
                 }
             }
@@ -191,5 +211,56 @@ impl Boundary<sph_core::Dim1> {
                 normal: -1.0,
             },
         ]
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use sph_core::Dim3;
+    use sph_core::glam::DVec3;
+
+    /// A ghost placed again from its source's later position (`Ghost::moved_to`, the
+    /// midpoint stage of `NeighbourSearch::EachStep`) lands where a new ghost of that
+    /// position would, with the same map: an oblique wall, a contact wall, a periodic
+    /// face.
+    #[test]
+    fn a_ghost_moved_with_its_source_lands_where_a_new_one_would() {
+        let n = DVec3::new(0.0, 0.6, 0.8);
+        let boundaries = [
+            Boundary::<Dim3>::Wall {
+                point: DVec3::new(0.3e-3, -0.2e-3, -1.0e-3),
+                normal: n,
+            },
+            Boundary::Contact {
+                point: DVec3::new(0.0, 0.0, -1.0e-3),
+                normal: DVec3::Z,
+            },
+            Boundary::Periodic {
+                axis: 0,
+                lo: -1.0e-3,
+                hi: 2.0e-3,
+            },
+        ];
+        let x0 = DVec3::new(-0.7e-3, 0.1e-3, -0.6e-3);
+        let x1 = x0 + DVec3::new(0.05e-3, -0.02e-3, 0.03e-3);
+        let radius = [1.0e-3];
+        for b in boundaries {
+            let (mut first, mut later) = (Vec::new(), Vec::new());
+            b.ghosts(&[x0], &radius, &mut first);
+            b.ghosts(&[x1], &radius, &mut later);
+            assert_eq!((first.len(), later.len()), (1, 1), "{b:?}");
+            let moved = first[0].moved_to(x1);
+            assert!(
+                (moved.position - later[0].position).length() < 1e-18,
+                "{b:?}: {:?} against {:?}",
+                moved.position,
+                later[0].position
+            );
+            assert_eq!(moved.map, later[0].map);
+            assert_eq!(moved.source, later[0].source);
+            // Placed again at its own position, a ghost does not move.
+            assert!((first[0].moved_to(x0).position - first[0].position).length() < 1e-18);
+        }
     }
 }

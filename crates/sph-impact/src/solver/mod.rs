@@ -18,7 +18,8 @@ pub mod timestep;
 pub use axisymmetric::Geometry;
 pub use boundary::Boundary;
 pub use config::{
-    CrackLength, DensityForm, EnergyForm, MomentumForm, SchemeConfig, SmoothingMode, YieldPressure,
+    CrackLength, DensityForm, EnergyForm, MomentumForm, NeighbourSearch, SchemeConfig,
+    SmoothingMode, YieldPressure,
 };
 pub use damage::DamageEvents;
 pub use error::SolverError;

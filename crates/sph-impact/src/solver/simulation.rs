@@ -6,7 +6,9 @@ use crate::solver::axisymmetric::{
     reference_spacing, ring_area, ring_density_for_area,
 };
 use crate::solver::boundary::Boundary;
-use crate::solver::config::{CrackLength, DensityForm, EnergyForm, SchemeConfig, SmoothingMode};
+use crate::solver::config::{
+    CrackLength, DensityForm, EnergyForm, NeighbourSearch, SchemeConfig, SmoothingMode,
+};
 use crate::solver::damage::{
     DamageEvents, DamageRate, DamageStageInput, TensorRate, activates_on_pseudo_strain,
     add_shear_damage, advance_damage, damage_of, damage_rates, damaged_pressure,
@@ -23,7 +25,7 @@ use crate::solver::pair_kernel::{
     PairKernel, ScalarPairKernel, TensorPairKernel, equivalent_radius,
 };
 use crate::solver::pair_rules::{NoPairRule, PairRule};
-use crate::solver::state::{Extended, State};
+use crate::solver::state::{Extended, Ghosts, PlacedGhost, State};
 use crate::solver::timestep::{TimestepVote, acceleration_vote, cfl_vote, density_vote};
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
@@ -492,7 +494,10 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
     /// of it: one state fewer at the step's memory peak.
     pub fn step(&mut self, max_dt: f64) -> Result<StepInfo, SolverError> {
         let mut s0_state = std::mem::take(&mut self.state);
-        let (s0, _) = match self.stage(&mut s0_state) {
+        // One search per step (NeighbourSearch::EachStep): the first stage keeps its list
+        // and ghosts for the second.
+        let per_step = self.scheme.neighbour_search == NeighbourSearch::EachStep;
+        let (s0, topology) = match self.stage(&mut s0_state, None, per_step) {
             Ok(stage) => stage,
             Err(e) => return Err(self.put_back(s0_state, e)),
         };
@@ -561,7 +566,7 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
         // its own (peak memory per particle).
         drop(s0);
         self.timings.integration += t0.elapsed().as_secs_f64();
-        let stage = self.stage(&mut half);
+        let stage = self.stage(&mut half, topology, false);
         half.swap_constants(&mut s0_state);
         let (s1, _) = match stage {
             Ok(stage) => stage,
@@ -661,7 +666,7 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
     pub fn sync_density(&mut self) -> Result<(), SolverError> {
         if self.scheme.density == DensityForm::Summation {
             let mut s = self.state.clone();
-            self.stage(&mut s)?;
+            self.stage(&mut s, None, false)?;
             self.state.particles.density = s.particles.density;
         }
         Ok(())

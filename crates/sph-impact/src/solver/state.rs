@@ -314,6 +314,28 @@ pub(crate) struct Extended<'a, D: Dimension> {
     /// RZ only: the kernel-smoothed radius R̂(r, h) that the denominators η = ρ R̂ use
     /// (axisymmetric.rs); empty in Cartesian runs.
     pub smoothed_radius: Vec<f64>,
+    /// The ghosts as placed, in order, when [`Ghosts::Place`] asked to record them: what
+    /// [`Ghosts::Replay`] places again from the sources' later positions.
+    pub placed: Vec<PlacedGhost<D>>,
+}
+
+/// A ghost as [`Extended::build`] placed it, and whether its boundary only pushes.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct PlacedGhost<D: Dimension> {
+    pub ghost: Ghost<D>,
+    pub unilateral: bool,
+}
+
+/// How [`Extended::build`] makes the ghosts.
+#[derive(Clone, Copy, Debug)]
+pub(crate) enum Ghosts<'p, D: Dimension> {
+    /// Every boundary's ghosts of the particles now within their support of it;
+    /// `record` keeps them in [`Extended::placed`].
+    Place { record: bool },
+    /// The same ghosts as an earlier build, in the same order, placed from their
+    /// sources' present positions: the ghost indices of a neighbour list built then stay
+    /// valid (`SchemeConfig::neighbour_search`).
+    Replay(&'p [PlacedGhost<D>]),
 }
 
 impl<'a, D: Dimension> Extended<'a, D> {
@@ -376,6 +398,7 @@ impl<'a, D: Dimension> Extended<'a, D> {
         damage: Vec<f64>,
         support: &[f64],
         boundaries: &[Boundary<D>],
+        ghosts: Ghosts<'_, D>,
     ) -> Self {
         let p = &state.particles;
         let n = p.len();
@@ -405,49 +428,77 @@ impl<'a, D: Dimension> Extended<'a, D> {
             specific_energy: Vec::new(),
             radius: Vec::new(),
             smoothed_radius: Vec::new(),
+            placed: Vec::new(),
         };
         let mut radius = support.to_vec();
-        let mut ghosts: Vec<Ghost<D>> = Vec::new();
-        for b in boundaries {
-            ghosts.clear();
-            b.ghosts(&ext.position, &radius, &mut ghosts);
-            for g in &ghosts {
-                let s = g.source;
-                ext.position.push(g.position);
-                ext.velocity.push(g.map.mul_vec(ext.velocity[s]));
-                ext.mass.push(ext.mass[s]);
-                ext.density.push(ext.density[s]);
-                ext.pressure.push(ext.pressure[s]);
-                ext.sound_speed.push(ext.sound_speed[s]);
-                ext.h.push(ext.h[s]);
-                if !ext.h_tensor.is_empty() {
-                    // H maps as a quadratic form: H' = M H Mᵀ for an orthogonal map M.
-                    let hm = g
-                        .map
-                        .mul_tensor(&ext.h_tensor[s])
-                        .mul_tensor(&g.map.transpose());
-                    ext.h_tensor.push(hm);
+        match ghosts {
+            Ghosts::Place { record } => {
+                let mut made: Vec<Ghost<D>> = Vec::new();
+                for b in boundaries {
+                    made.clear();
+                    b.ghosts(&ext.position, &radius, &mut made);
+                    for g in &made {
+                        let placed = PlacedGhost {
+                            ghost: *g,
+                            unilateral: b.is_unilateral(),
+                        };
+                        ext.push_ghost(&placed, &mut radius);
+                        if record {
+                            ext.placed.push(placed);
+                        }
+                    }
                 }
-                ext.spacing0.push(ext.spacing0[s]);
-                ext.material.push(ext.material[s]);
-                ext.source.push(ext.source[s]);
-                let composed = g.map.mul_tensor(&ext.map(s));
-                ext.ghost_map.push(composed);
-                let unilateral = b.is_unilateral() || ext.is_unilateral(s);
-                ext.ghost_unilateral.push(unilateral);
-                if ext.has_stress() {
-                    // A stress maps as a tensor: S' = M S Mᵀ with M the reflection in 3-D.
-                    let m = embed_map::<D>(&g.map);
-                    let sm = m * ext.undamaged_stress(s) * m.transpose();
-                    ext.ghost_stress.push(sm);
+            }
+            Ghosts::Replay(plan) => {
+                for p in plan {
+                    let placed = PlacedGhost {
+                        ghost: p.ghost.moved_to(ext.position[p.ghost.source]),
+                        unilateral: p.unilateral,
+                    };
+                    ext.push_ghost(&placed, &mut radius);
                 }
-                if !ext.damage.is_empty() {
-                    ext.damage.push(ext.damage[s]);
-                }
-                radius.push(radius[s]);
             }
         }
         ext
+    }
+
+    /// Appends one ghost, its fields copied from its source (`radius` is the support of
+    /// every particle so far, which a later boundary's ghosts read).
+    fn push_ghost(&mut self, placed: &PlacedGhost<D>, radius: &mut Vec<f64>) {
+        let g = &placed.ghost;
+        let s = g.source;
+        self.position.push(g.position);
+        self.velocity.push(g.map.mul_vec(self.velocity[s]));
+        self.mass.push(self.mass[s]);
+        self.density.push(self.density[s]);
+        self.pressure.push(self.pressure[s]);
+        self.sound_speed.push(self.sound_speed[s]);
+        self.h.push(self.h[s]);
+        if !self.h_tensor.is_empty() {
+            // H maps as a quadratic form: H' = M H Mᵀ for an orthogonal map M.
+            let hm = g
+                .map
+                .mul_tensor(&self.h_tensor[s])
+                .mul_tensor(&g.map.transpose());
+            self.h_tensor.push(hm);
+        }
+        self.spacing0.push(self.spacing0[s]);
+        self.material.push(self.material[s]);
+        self.source.push(self.source[s]);
+        let composed = g.map.mul_tensor(&self.map(s));
+        self.ghost_map.push(composed);
+        let unilateral = placed.unilateral || self.is_unilateral(s);
+        self.ghost_unilateral.push(unilateral);
+        if self.has_stress() {
+            // A stress maps as a tensor: S' = M S Mᵀ with M the reflection in 3-D.
+            let m = embed_map::<D>(&g.map);
+            let sm = m * self.undamaged_stress(s) * m.transpose();
+            self.ghost_stress.push(sm);
+        }
+        if !self.damage.is_empty() {
+            self.damage.push(self.damage[s]);
+        }
+        radius.push(radius[s]);
     }
 }
 

@@ -281,6 +281,12 @@ fn rates_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
         }
         let r_hat = r / dist;
         let g = pk.grad_at(i, j, r, dist);
+        if g == D::Vector::ZERO {
+            // Out of both supports: a pair of a list kept from the step's first stage
+            // (NeighbourSearch::EachStep) that has moved apart since. A fresh list holds
+            // no such pair.
+            return PairEval::QUIET;
+        }
         let (vj, rhoj, pj, cj, mj) = (
             ext.velocity[j],
             ext.density[j],

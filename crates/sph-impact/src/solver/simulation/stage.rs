@@ -21,6 +21,13 @@ pub(super) struct Stage<D: Dimension> {
     pub(super) tensor_rates: Vec<TensorRate>,
 }
 
+/// A stage's neighbour list and the ghosts its indices count, kept for the step's second
+/// stage when the list is built once per step ([`NeighbourSearch::EachStep`]).
+pub(super) struct Topology<D: Dimension> {
+    list: NeighborList,
+    ghosts: Vec<PlacedGhost<D>>,
+}
+
 impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
     /// Pass 1 (when `options` asks for it) and pass 2 with the pair kernel `pk`, and
     /// the instant pass 2 began.
@@ -56,11 +63,16 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
         h_min / self.scheme.n_target
     }
 
-    /// Derivatives of `state`, and the neighbour list used.
+    /// Derivatives of `state`. With `reuse`, the neighbour list and ghosts of an earlier
+    /// stage of this step are used (the ghosts placed again from their sources' present
+    /// positions) instead of a new search; with `keep`, this stage's are returned for
+    /// such reuse.
     pub(super) fn stage(
         &mut self,
         state: &mut State<D>,
-    ) -> Result<(Stage<D>, NeighborList), SolverError> {
+        reuse: Option<Topology<D>>,
+        keep: bool,
+    ) -> Result<(Stage<D>, Option<Topology<D>>), SolverError> {
         let t0 = Instant::now();
         let (pressure, mut sound_speed) = eos_pass(&state.particles, &self.materials);
         let damage = damage_of(state, &self.materials);
@@ -93,6 +105,10 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
             damage,
             &support,
             &self.boundaries,
+            match &reuse {
+                Some(t) => Ghosts::Replay(&t.ghosts),
+                None => Ghosts::Place { record: keep },
+            },
         );
         ext.coupling = self.scheme.stress_coupling;
         if !adhesion.is_empty() {
@@ -156,12 +172,14 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
             }
         }
         let t_search = Instant::now();
-        let list = if ext.h_tensor.is_empty() {
-            self.search
-                .neighbors(&ext.position, &ScalarSupport::new(&ext.h)?)?
-        } else {
-            self.search
-                .neighbors(&ext.position, &TensorSupport::new(&ext.h_tensor)?)?
+        let list = match reuse {
+            Some(t) => t.list,
+            None if ext.h_tensor.is_empty() => self
+                .search
+                .neighbors(&ext.position, &ScalarSupport::new(&ext.h)?)?,
+            None => self
+                .search
+                .neighbors(&ext.position, &TensorSupport::new(&ext.h_tensor)?)?,
         };
         let search = t_search.elapsed().as_secs_f64();
         if self.scheme.density == DensityForm::Summation {
@@ -320,6 +338,10 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
         self.timings.neighbour_entries += (0..n_real).map(|i| list.count(i) as u64).sum::<u64>();
         let mut pressure_d = std::mem::take(&mut ext.pressure);
         pressure_d.truncate(n_real);
+        let topology = keep.then(|| Topology {
+            list,
+            ghosts: std::mem::take(&mut ext.placed),
+        });
         Ok((
             Stage {
                 rates: rates_out,
@@ -331,7 +353,7 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
                 damage_rates,
                 tensor_rates,
             },
-            list,
+            topology,
         ))
     }
 
