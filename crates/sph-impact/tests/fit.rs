@@ -162,6 +162,37 @@ fn a_fit_finds_the_speed_inside_the_constraint_and_resumes_to_the_same_search() 
         std::fs::read_to_string(pieces.join("fit.csv")).unwrap(),
         std::fs::read_to_string(dir.join("fit.csv")).unwrap()
     );
+
+    // Two at a time (the starting simplex's three runs, then the two sensitivity runs):
+    // the same runs, numbers and sensitivities.
+    let two = fresh("fit_two_jobs");
+    let r2 = run_fit(&fit, &two, &StudyOptions { jobs: 2, ..quiet() }).unwrap();
+    assert_eq!(
+        std::fs::read_to_string(two.join("fit.csv")).unwrap(),
+        std::fs::read_to_string(dir.join("fit.csv")).unwrap()
+    );
+    for (a, b) in r2.sensitivity.iter().zip(&report.sensitivity) {
+        assert_eq!(a.1, b.1);
+    }
+}
+
+/// A stop request before the first runs (Ctrl-C during the starting simplex) ends the
+/// fit with its report, not a panic, and the same command then runs the whole search.
+#[test]
+fn a_fit_stopped_in_its_starting_simplex_ends_cleanly_and_resumes() {
+    let fit = Fit::from_toml_str(&fit_text(1.0e4, 4), "fit.toml", &scenes()).unwrap();
+    let dir = fresh("fit_stopped");
+    let stopped = StudyOptions {
+        stop: sph_impact::run::StopFlag::new(),
+        ..quiet()
+    };
+    stopped.stop.request();
+    let r = run_fit(&fit, &dir, &stopped).unwrap();
+    assert!(r.ended.contains("stopped"), "{}", r.ended);
+    assert!(r.runs.is_empty() && r.sensitivity.is_empty());
+    let r = run_fit(&fit, &dir, &quiet()).unwrap();
+    assert_eq!(r.runs.len(), 4);
+    assert!(r.runs.iter().all(|e| e.status == PointStatus::Done));
 }
 
 #[test]
@@ -211,12 +242,48 @@ fn bad_fit_files_name_the_key() {
             format!("{good}\n[[case]]\nname = \"slow\"\nscene = \"missing.toml\"\n"),
             "`case[0].scene`:",
         ),
+        (
+            format!("{good}\n[[set]]\npath = \"body.asteroid.velocity[2]\"\nvalue = 1.0\n"),
+            "`set[0].path`: the scene has no body named `asteroid`",
+        ),
+        (
+            format!(
+                "{good}\n[[set]]\npath = \"body.target.material.strength\"\n\
+                 value = {{ model = \"von-mises\" }}\n"
+            ),
+            "`set[0].value`: the scene",
+        ),
     ];
     for (text, expected) in cases {
         let e = Fit::from_toml_str(&text, "fit.toml", &scenes()).unwrap_err();
         let line = e.to_string();
         assert!(line.starts_with("fit.toml:"), "{line}");
         assert!(line.contains(expected), "{line}\n expected: {expected}");
+    }
+}
+
+/// `[[set]]` fixes a scene value for the whole fit: here the target's strength model,
+/// swapped for a constant strength, in the fit's scene and in its case's.
+#[test]
+fn a_fit_file_sets_fixed_values_in_its_scene_and_every_case() {
+    let set = "\n[[set]]\npath = \"body.target.material.strength\"\n\
+               value = { model = \"von-mises\", yield_strength = 1.0e8 }\n\
+               [[case]]\nname = \"slow\"\nscene = \"smoke_rz.toml\"\n\
+               [[target]]\nmetric = \"beta\"\nvalue = 2.0\ncase = \"slow\"\n";
+    let fit = Fit::from_toml_str(
+        &format!("{}{set}", fit_text(1.0, 10)),
+        "fit.toml",
+        &scenes(),
+    )
+    .unwrap();
+    for scene in [&fit.study.scene, &fit.cases[0].study.scene] {
+        let scene = sph_impact::scene::Scene::from_toml_str(scene, "scene.toml").unwrap();
+        let target = scene.bodies.iter().find(|b| b.name == "target").unwrap();
+        let text = format!("{:?}", target.material);
+        assert!(
+            text.contains("von-mises") || text.contains("VonMises"),
+            "{text}"
+        );
     }
 }
 

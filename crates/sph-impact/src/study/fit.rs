@@ -31,13 +31,15 @@ use crate::study::error::StudyError;
 use crate::study::runner::{
     Outcome, check_stored_scene, point_dir, read_record, run_point, stored_scene,
 };
-use crate::study::study::{RunSettings, Study, base_study, locate, read_file, read_path};
+use crate::study::study::{
+    RunSettings, Study, base_study, locate, read_file, read_path, scene_message,
+};
 use crate::study::table::PointStatus;
 use crate::study::{StudyOptions, metric};
 use serde::{Deserialize, Serialize};
 use std::cell::RefCell;
 use std::fmt::Write as _;
-use std::path::Path;
+use std::path::{Path, PathBuf};
 
 /// The objective of a point that is not run (outside the bounds, against a constraint):
 /// above any objective of a run, growing with the violation.
@@ -189,6 +191,14 @@ struct CaseFile {
     hold_out: bool,
 }
 
+/// `[[set]]`: a scene value fixed for the whole fit, in its scene and every case.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct SetFile {
+    path: String,
+    value: toml::Value,
+}
+
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
 struct FitFile {
@@ -207,6 +217,29 @@ struct FitFile {
     derived: Vec<Derived>,
     #[serde(default)]
     case: Vec<CaseFile>,
+    #[serde(default)]
+    set: Vec<SetFile>,
+}
+
+/// Sets `value` at `path` in `study`'s scene for good (a fit's `[[set]]`); `Err` is the
+/// key at fault (`path` or `value`) and why.
+fn fix(study: &mut Study, path: &str, value: &toml::Value) -> Result<(), (&'static str, String)> {
+    let mut table: toml::Table = toml::from_str(&study.scene)
+        .map_err(|e| ("path", format!("{}: {}", study.scene_origin, e.message())))?;
+    crate::study::scene_path::set(&mut table, path, value.clone()).map_err(|m| ("path", m))?;
+    let text = toml::to_string(&table).map_err(|e| ("value", e.to_string()))?;
+    if let Err(e) = Scene::from_toml_str(&text, &study.scene_origin) {
+        return Err((
+            "value",
+            format!(
+                "the scene {} refuses it: {}",
+                study.scene_origin,
+                scene_message(&e)
+            ),
+        ));
+    }
+    study.scene = text;
+    Ok(())
 }
 
 impl Fit {
@@ -237,6 +270,15 @@ impl Fit {
                 study,
                 hold_out: c.hold_out,
             });
+        }
+        // The fixed values go into the scene of the fit and of every case, one at a time,
+        // each checked by the scene reader as it is set.
+        for (i, set) in file.set.iter().enumerate() {
+            for s in std::iter::once(&mut study).chain(cases.iter_mut().map(|c| &mut c.study)) {
+                fix(s, &set.path, &set.value).map_err(|(k, m)| {
+                    locate(&map, StudyError::at_key(format!("set[{i}].{k}"), m))
+                })?;
+            }
         }
         let fit = Fit {
             study,
@@ -580,6 +622,14 @@ pub struct HoldOut {
 /// from the stored runs).
 pub type Objective<'a> = dyn Fn(&[f64]) -> f64 + 'a;
 
+/// One run still to do: a case's study, its directory, the point's scene and the point.
+struct PendingRun<'s> {
+    study: &'s Study,
+    case_root: PathBuf,
+    scene: String,
+    point: Point,
+}
+
 /// The search's state behind argmin's `&self` cost function.
 struct Search<'a> {
     fit: &'a Fit,
@@ -603,13 +653,7 @@ impl Search<'_> {
     ) -> Result<Option<Evaluation>, StudyError> {
         let fit = self.fit;
         let point = fit.point(index, u);
-        let cases: Vec<Option<usize>> = std::iter::once(None)
-            .chain(
-                (0..fit.cases.len())
-                    .filter(|&c| !fit.cases[c].hold_out)
-                    .map(Some),
-            )
-            .collect();
+        let cases = self.fitted_cases();
         let Some(status) = self.run_cases(root, &point, &cases)? else {
             return Ok(None);
         };
@@ -657,15 +701,14 @@ impl Search<'_> {
         Ok(metric::read_point(&pdir, [metric])?.0[0])
     }
 
-    /// Runs `point` in each of `cases` (`None`: the fit's own scene) whose run is not
-    /// finished, `options.jobs` at a time, and returns each one's status; `None` when a
-    /// stop request stopped one.
-    fn run_cases(
+    /// The runs of `point` in each of `cases` (`None`: the fit's own scene) that are not
+    /// finished under `root`.
+    fn pending(
         &self,
         root: &Path,
         point: &Point,
         cases: &[Option<usize>],
-    ) -> Result<Option<Vec<PointStatus>>, StudyError> {
+    ) -> Result<Vec<PendingRun<'_>>, StudyError> {
         let fit = self.fit;
         let mut pending = Vec::new();
         for &c in cases {
@@ -681,16 +724,28 @@ impl Search<'_> {
                 ))
             })?;
             if !read_record(&pdir)?.is_some_and(|r| r.status != PointStatus::Pending) {
-                pending.push((study, case_root, scene));
+                pending.push(PendingRun {
+                    study,
+                    case_root,
+                    scene,
+                    point: point.clone(),
+                });
             }
         }
+        Ok(pending)
+    }
+
+    /// Runs `pending`, `options.jobs` at a time; false when a stop request stopped one.
+    fn execute(&self, pending: &[PendingRun<'_>]) -> Result<bool, StudyError> {
         let options = self.options;
         for chunk in pending.chunks(options.jobs.max(1)) {
             let outcomes: Vec<Result<Outcome, StudyError>> = std::thread::scope(|s| {
                 let handles: Vec<_> = chunk
                     .iter()
-                    .map(|(study, case_root, scene)| {
-                        s.spawn(move || run_point(study, case_root, point, scene, options))
+                    .map(|r| {
+                        s.spawn(move || {
+                            run_point(r.study, &r.case_root, &r.point, &r.scene, options)
+                        })
                     })
                     .collect();
                 handles
@@ -704,31 +759,68 @@ impl Search<'_> {
             });
             for o in outcomes {
                 if let Outcome::Stopped = o? {
-                    return Ok(None);
+                    return Ok(false);
                 }
             }
         }
+        Ok(true)
+    }
+
+    /// Runs `point` in each of `cases` (`None`: the fit's own scene) whose run is not
+    /// finished, `options.jobs` at a time, and returns each one's status; `None` when a
+    /// stop request stopped one.
+    fn run_cases(
+        &self,
+        root: &Path,
+        point: &Point,
+        cases: &[Option<usize>],
+    ) -> Result<Option<Vec<PointStatus>>, StudyError> {
+        if !self.execute(&self.pending(root, point, cases)?)? {
+            return Ok(None);
+        }
         let mut status = Vec::new();
         for &c in cases {
-            let pdir = point_dir(&fit.case_root(root, c), point.index);
+            let pdir = point_dir(&self.fit.case_root(root, c), point.index);
             status.push(read_record(&pdir)?.map_or(PointStatus::Pending, |r| r.status));
         }
         Ok(Some(status))
     }
 
-    fn cost(&self, u: &[f64]) -> Result<f64, String> {
-        let key: Vec<u64> = u.iter().map(|x| x.to_bits()).collect();
-        if let Some((_, c)) = self.seen.borrow().iter().find(|(k, _)| *k == key) {
-            return Ok(*c);
+    /// Runs every (root, point, cases) of `batch` that is not finished, all of them
+    /// `options.jobs` at a time (runs the search would otherwise ask for one point after
+    /// another); false when a stop request stopped one. Their results are read back when
+    /// the search asks for them.
+    fn run_batch(
+        &self,
+        batch: &[(PathBuf, Point, Vec<Option<usize>>)],
+    ) -> Result<bool, StudyError> {
+        let mut all = Vec::new();
+        for (root, point, cases) in batch {
+            all.extend(self.pending(root, point, cases)?);
         }
-        // Outside the bounds or the constraints: not run.
+        self.execute(&all)
+    }
+
+    /// The cases every point of the search runs: the fit's own scene and the fitted cases.
+    fn fitted_cases(&self) -> Vec<Option<usize>> {
+        let fit = self.fit;
+        std::iter::once(None)
+            .chain(
+                (0..fit.cases.len())
+                    .filter(|&c| !fit.cases[c].hold_out)
+                    .map(Some),
+            )
+            .collect()
+    }
+
+    /// The penalty of the point at `u`: 0 inside the bounds and the constraints (a point
+    /// that is run), else above any run's objective and growing with the violation.
+    fn penalty(&self, u: &[f64]) -> f64 {
         let outside: f64 = u.iter().map(|&x| (-x).max(0.0) + (x - 1.0).max(0.0)).sum();
-        let mut penalty = if outside > 0.0 {
-            PENALTY * (1.0 + outside)
-        } else {
-            0.0
-        };
-        if penalty == 0.0 && !self.fit.constraints.is_empty() {
+        if outside > 0.0 {
+            return PENALTY * (1.0 + outside);
+        }
+        if !self.fit.constraints.is_empty() {
             let point = self.fit.point(0, u);
             let violation = self
                 .fit
@@ -738,9 +830,19 @@ impl Search<'_> {
                 .and_then(|t| Scene::from_toml_str(&t, &self.fit.study.scene_origin).ok())
                 .map_or(1.0, |s| self.fit.violation(&s));
             if violation > 0.0 {
-                penalty = PENALTY * (1.0 + violation);
+                return PENALTY * (1.0 + violation);
             }
         }
+        0.0
+    }
+
+    fn cost(&self, u: &[f64]) -> Result<f64, String> {
+        let key: Vec<u64> = u.iter().map(|x| x.to_bits()).collect();
+        if let Some((_, c)) = self.seen.borrow().iter().find(|(k, _)| *k == key) {
+            return Ok(*c);
+        }
+        // Outside the bounds or the constraints: not run.
+        let penalty = self.penalty(u);
         let cost = if penalty > 0.0 {
             penalty
         } else {
@@ -809,9 +911,11 @@ impl argmin::core::CostFunction for Problem<'_, '_> {
 }
 
 /// Runs the fit into `dir` (created if needed), writes `fit.csv`, `fit.json` and
-/// `fit.md`, and returns the report. The search is sequential; `options.jobs` runs the
-/// cases of one point (and the hold-out cases) side by side; `options.stop` stops it at
-/// a checkpoint, which the next call resumes.
+/// `fit.md`, and returns the report. `options.jobs` runs side by side the runs that do
+/// not wait on each other: the starting simplex's points, the cases of one point, and
+/// the sensitivity and hold-out runs; the search's later points, each chosen from the
+/// runs before it, come one at a time. `options.stop` stops it at a checkpoint, which
+/// the next call resumes.
 pub fn run_fit(fit: &Fit, dir: &Path, options: &StudyOptions) -> Result<FitReport, StudyError> {
     run_fit_with(fit, dir, options, &|metrics: &[f64]| fit.objective(metrics))
 }
@@ -858,14 +962,33 @@ pub fn run_fit_with(
         };
         simplex.push(v);
     }
+    // The starting simplex's runs side by side, with the numbers the search gives them
+    // (the vertices in order, those against a constraint not run); the search then reads
+    // them back. A stop request among them ends the fit before the search begins (argmin
+    // evaluates the simplex where a cost cannot fail).
+    let mut first = Vec::new();
+    for u in &simplex {
+        if search.penalty(u) == 0.0 && first.len() < fit.budget {
+            first.push((
+                search_dir.clone(),
+                fit.point(first.len(), u),
+                search.fitted_cases(),
+            ));
+        }
+    }
+    let started = search.run_batch(&first)?;
     let solver = argmin::solver::neldermead::NelderMead::new(simplex)
         // The spread of the simplex's objectives (squared relative errors) below which the
         // search ends: about 1e-4 in the relative errors. The budget usually ends it first.
         .with_sd_tolerance(1e-8)
         .map_err(|e| StudyError::failed(e.to_string()))?;
-    let result = argmin::core::Executor::new(Problem(&search), solver)
-        .configure(|s| s.max_iters(10 * fit.budget as u64))
-        .run();
+    let result = if started {
+        argmin::core::Executor::new(Problem(&search), solver)
+            .configure(|s| s.max_iters(10 * fit.budget as u64))
+            .run()
+    } else {
+        Err(argmin::core::Error::msg("stopped"))
+    };
     if let Some(e) = search.failure.borrow_mut().take() {
         return Err(e);
     }
@@ -896,14 +1019,33 @@ pub fn run_fit_with(
         // Per best run, so that a search continued with a larger budget, whose best
         // point may move, does not meet the steps of another point.
         let root = dir.join("sensitivity").join(format!("run-{b:04}"));
-        for k in 0..fit.free.len() {
-            let mut u = u_best.clone();
-            u[k] += if u[k] + SENSITIVITY_STEP <= 1.0 {
-                SENSITIVITY_STEP
-            } else {
-                -SENSITIVITY_STEP
-            };
-            let Some(e) = search.evaluate(&root, k, &u)? else {
+        let steps: Vec<Vec<f64>> = (0..fit.free.len())
+            .map(|k| {
+                let mut u = u_best.clone();
+                u[k] += if u[k] + SENSITIVITY_STEP <= 1.0 {
+                    SENSITIVITY_STEP
+                } else {
+                    -SENSITIVITY_STEP
+                };
+                u
+            })
+            .collect();
+        let held: Vec<Option<usize>> = (0..fit.cases.len())
+            .filter(|&c| fit.cases[c].hold_out)
+            .map(Some)
+            .collect();
+        let held_root = dir.join("hold_out").join(format!("run-{b:04}"));
+        let point = fit.point(0, &u_best);
+        // Every sensitivity and hold-out run side by side; read back below.
+        let mut batch: Vec<(PathBuf, Point, Vec<Option<usize>>)> = steps
+            .iter()
+            .enumerate()
+            .map(|(k, u)| (root.clone(), fit.point(k, u), search.fitted_cases()))
+            .collect();
+        batch.push((held_root.clone(), point.clone(), held.clone()));
+        search.run_batch(&batch)?;
+        for (k, u) in steps.iter().enumerate() {
+            let Some(e) = search.evaluate(&root, k, u)? else {
                 break;
             };
             let dp = (e.values[k] - runs[b].values[k]) / runs[b].values[k];
@@ -912,12 +1054,7 @@ pub fn run_fit_with(
                 .collect();
             sensitivity.push((e, elasticity));
         }
-        let held: Vec<Option<usize>> = (0..fit.cases.len())
-            .filter(|&c| fit.cases[c].hold_out)
-            .map(Some)
-            .collect();
-        let root = dir.join("hold_out").join(format!("run-{b:04}"));
-        let point = fit.point(0, &u_best);
+        let root = held_root;
         if let Some(status) = search.run_cases(&root, &point, &held)? {
             for (&c, &st) in held.iter().zip(&status) {
                 let mut metrics = Vec::new();

@@ -388,7 +388,7 @@ pub(crate) fn describe(point: &Point) -> String {
 
 /// A scene error's text without the scene file's own location (the point's scene is not
 /// a file the user wrote).
-fn scene_message(e: &crate::scene::SceneError) -> String {
+pub(crate) fn scene_message(e: &crate::scene::SceneError) -> String {
     let mut e = e.clone();
     e.location = None;
     e.to_string()
