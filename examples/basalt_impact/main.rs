@@ -5,7 +5,7 @@
 //! By default it runs the 3.9 km/s case in axisymmetric (RZ) geometry from the bundled
 //! scene `examples/scenes/basalt_3.9kms_rz.toml` (the same bodies and settings as the 3-D
 //! `basalt_3.9kms.toml`, plus free flight of the ejecta above 20 mm), at resolution scale
-//! 0.5 (A_res = 1 mm instead of the study's 0.5 mm) to the study's 400 µs: 536 s on two
+//! 0.5 (A_res = 1 mm instead of the study's 0.5 mm) to the study's 400 µs: 458 s on two
 //! shared threads (docs/validation.md, "Free flight"). At the end it prints crater
 //! diameter, bowl diameter, depth and β beside the experiment's values.
 //!
