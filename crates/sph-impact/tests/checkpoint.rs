@@ -119,14 +119,7 @@ fn a_resumed_run_with_one_search_per_step_repeats_the_uninterrupted_one() {
         scene.scheme().neighbour_search,
         sph_impact::solver::NeighbourSearch::EachStep
     );
-    let end = Some(0.5e-6);
-    let whole = fresh("checkpoint-each-step-whole");
-    let a = run(&scene, &whole, &options(2, end, true, false)).unwrap();
-    let resumed = fresh("checkpoint-each-step-resumed");
-    copy_dir(&whole, &resumed);
-    let b = run(&scene, &resumed, &options(1, end, false, true)).unwrap();
-    assert_eq!(b.resumed_from_s.len(), 1);
-    assert_same_outputs((&whole, &a), (&resumed, &b), "snapshots/00002.vtu");
+    resumed_repeats_whole(&scene, "each-step", 1);
 }
 
 #[test]
@@ -146,15 +139,22 @@ fn a_finished_run_extended_to_a_later_end_equals_one_run_to_it() {
 fn a_resumed_3d_run_repeats_the_uninterrupted_one_bit_for_bit() {
     let text = std::fs::read_to_string(scene_file("smoke.toml")).unwrap();
     let scene = Scene::from_toml_str(&text, "smoke.toml").unwrap();
+    resumed_repeats_whole(&scene, "3d", 2);
+}
+
+/// Runs `scene` to 0.5 µs with checkpoints on two threads, resumes a copy of its
+/// directory on `threads` (from 0.25 µs: snapshots at 0, 0.25 and 0.5 µs), checks that
+/// the two wrote the same outputs, and returns the resumed directory.
+fn resumed_repeats_whole(scene: &Scene, name: &str, threads: usize) -> PathBuf {
     let end = Some(0.5e-6);
-    let whole = fresh("checkpoint-3d-whole");
-    let a = run(&scene, &whole, &options(2, end, true, false)).unwrap();
-    let resumed = fresh("checkpoint-3d-resumed");
+    let whole = fresh(&format!("checkpoint-{name}-whole"));
+    let a = run(scene, &whole, &options(2, end, true, false)).unwrap();
+    let resumed = fresh(&format!("checkpoint-{name}-resumed"));
     copy_dir(&whole, &resumed);
-    let b = run(&scene, &resumed, &options(2, end, false, true)).unwrap();
-    assert_eq!(b.resumed_from_s.len(), 1);
-    // Snapshots at 0, 0.25 and 0.5 µs; resumed from 0.25 µs.
+    let b = run(scene, &resumed, &options(threads, end, false, true)).unwrap();
+    assert_eq!(b.resumed_from_s.len(), 1, "{name}");
     assert_same_outputs((&whole, &a), (&resumed, &b), "snapshots/00002.vtu");
+    resumed
 }
 
 /// In plane strain and in 1-D too (the example scenes to 0.5 µs, resumed from 0.25 µs);
@@ -163,18 +163,11 @@ fn a_resumed_3d_run_repeats_the_uninterrupted_one_bit_for_bit() {
 fn resumed_plane_and_1d_runs_repeat_the_uninterrupted_ones_bit_for_bit() {
     for (file, name) in [("smoke_plane.toml", "plane"), ("flyer_plate_1d.toml", "1d")] {
         let scene = Scene::from_toml_file(scene_file(file)).unwrap();
-        let end = Some(0.5e-6);
-        let whole = fresh(&format!("checkpoint-{name}-whole"));
-        let a = run(&scene, &whole, &options(2, end, true, false)).unwrap();
-        let resumed = fresh(&format!("checkpoint-{name}-resumed"));
-        copy_dir(&whole, &resumed);
-        let b = run(&scene, &resumed, &options(1, end, false, true)).unwrap();
-        assert_eq!(b.resumed_from_s.len(), 1, "{name}");
-        assert_same_outputs((&whole, &a), (&resumed, &b), "snapshots/00002.vtu");
+        let resumed = resumed_repeats_whole(&scene, name, 1);
         if name == "1d" {
             let mut plane = scene.clone();
             plane.geometry = sph_impact::scene::GeometryKind::Plane;
-            let message = refused(&plane, &resumed, &options(1, end, false, true));
+            let message = refused(&plane, &resumed, &options(1, Some(0.5e-6), false, true));
             assert!(
                 message.contains("geometry = \"1d\" run") && message.contains("\"plane\""),
                 "{message}"

@@ -9,26 +9,15 @@
 //! `cargo test -p sph-impact --release --test neighbour_search -- --nocapture` prints the
 //! differences.
 
-use sph_core::{Dimension, Vector};
+mod common;
+
+use common::{gap_of, scene_text, with_solver_keys};
+use sph_core::Dimension;
 use sph_impact::run::{RunOptions, run};
 use sph_impact::scene::{Scene, SceneSimulation};
 use sph_impact::solver::{NeighbourSearch, Simulation};
 use sph_kernel::KernelChoice;
-use std::path::{Path, PathBuf};
-
-fn scene_text(name: &str) -> String {
-    let root = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../examples/scenes");
-    std::fs::read_to_string(root.join(name)).unwrap()
-}
-
-/// `text` with `keys` added to its `[solver]` table.
-fn with_solver_keys(text: &str, keys: &str) -> String {
-    if text.contains("\n[solver]\n") {
-        text.replacen("\n[solver]\n", &format!("\n[solver]\n{keys}"), 1)
-    } else {
-        format!("{text}\n[solver]\n{keys}")
-    }
-}
+use std::path::Path;
 
 /// The smoke scenes of every geometry, each with the mirror ghosts of its kind: none in
 /// 3-D, the two symmetry planes of the 3-D quarter, the axis in RZ, the walls of the 1-D
@@ -59,60 +48,6 @@ fn cases() -> Vec<(&'static str, String)> {
     ]
 }
 
-/// The largest difference of two runs' fields, relative to each field's largest
-/// magnitude, and the field.
-fn gap<D: Dimension>(
-    a: &Simulation<D, KernelChoice>,
-    b: &Simulation<D, KernelChoice>,
-) -> (f64, &'static str) {
-    let (pa, pb) = (&a.state.particles, &b.state.particles);
-    let flat = |v: &[D::Vector]| -> Vec<f64> { v.iter().flat_map(|x| x.to_array3()).collect() };
-    let stress = |s: &Simulation<D, KernelChoice>| -> Vec<f64> {
-        s.state
-            .stress
-            .iter()
-            .flat_map(|m| m.to_cols_array())
-            .collect()
-    };
-    let fields: [(&'static str, Vec<f64>, Vec<f64>); 7] = [
-        ("position", flat(&pa.position), flat(&pb.position)),
-        ("velocity", flat(&pa.velocity), flat(&pb.velocity)),
-        ("density", pa.density.clone(), pb.density.clone()),
-        (
-            "specific energy",
-            pa.specific_energy.clone(),
-            pb.specific_energy.clone(),
-        ),
-        (
-            "h",
-            pa.smoothing_length.clone(),
-            pb.smoothing_length.clone(),
-        ),
-        ("stress", stress(a), stress(b)),
-        (
-            "damage",
-            a.state.damage_state.clone(),
-            b.state.damage_state.clone(),
-        ),
-    ];
-    let mut worst = (0.0, "none");
-    for (name, x, y) in fields {
-        let scale = x.iter().fold(0.0_f64, |m, v| m.max(v.abs()));
-        if scale == 0.0 {
-            continue;
-        }
-        let d = x
-            .iter()
-            .zip(&y)
-            .fold(0.0_f64, |m, (u, v)| m.max((u - v).abs()))
-            / scale;
-        if d >= worst.0 {
-            worst = (d, name);
-        }
-    }
-    worst
-}
-
 /// Steps `a` (a search at each stage) and `b` (one per step) `steps` times with the same
 /// time steps and returns their gap.
 fn compare<D: Dimension>(
@@ -126,7 +61,8 @@ fn compare<D: Dimension>(
         let s = a.step(f64::INFINITY).unwrap();
         b.step(s.dt).unwrap();
     }
-    gap(a, b)
+    let gap = gap_of(a, b);
+    (gap.worst, gap.field)
 }
 
 #[test]
@@ -142,20 +78,12 @@ fn one_search_per_step_stays_close_to_one_per_stage_in_every_geometry() {
                 "scene.toml",
             )
             .unwrap();
-            let (worst, field) =
-                match (a.build().unwrap().simulation, b.build().unwrap().simulation) {
-                    (SceneSimulation::ThreeD(mut a), SceneSimulation::ThreeD(mut b)) => {
-                        compare(&mut a, &mut b, 20)
-                    }
-                    (SceneSimulation::Rz(mut a), SceneSimulation::Rz(mut b))
-                    | (SceneSimulation::Plane(mut a), SceneSimulation::Plane(mut b)) => {
-                        compare(&mut a, &mut b, 20)
-                    }
-                    (SceneSimulation::Line(mut a), SceneSimulation::Line(mut b)) => {
-                        compare(&mut a, &mut b, 20)
-                    }
-                    _ => unreachable!("one scene builds one geometry"),
-                };
+            let (worst, field) = on_both!(
+                a.build().unwrap().simulation,
+                b.build().unwrap().simulation,
+                compare,
+                20
+            );
             println!("{geometry}, {scheme}: largest relative difference {worst:.2e} ({field})");
             // It is another scheme: the midpoint stage saw other pairs and ghosts. The
             // 1-D flyer plate's pairs do not change in its first 20 steps, so there the

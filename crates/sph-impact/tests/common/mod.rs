@@ -1,0 +1,107 @@
+//! What the tests that compare two runs of one scene share: the bundled scenes' text,
+//! extra `[solver]` keys, the field-by-field gap between two simulations, and stepping a
+//! pair of built simulations of any geometry.
+
+use sph_core::{Dimension, Vector};
+use sph_impact::solver::Simulation;
+use sph_kernel::KernelChoice;
+use std::path::PathBuf;
+
+/// The text of the bundled scene `name` (examples/scenes).
+pub fn scene_text(name: &str) -> String {
+    let root = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../examples/scenes");
+    std::fs::read_to_string(root.join(name)).unwrap()
+}
+
+/// `text` with `keys` added to its `[solver]` table (made if it has none).
+pub fn with_solver_keys(text: &str, keys: &str) -> String {
+    if text.contains("\n[solver]\n") {
+        text.replacen("\n[solver]\n", &format!("\n[solver]\n{keys}"), 1)
+    } else {
+        format!("{text}\n[solver]\n{keys}")
+    }
+}
+
+/// The largest difference between two runs' fields, each relative to the field's
+/// largest magnitude, and that field.
+#[derive(Debug, Default)]
+pub struct Gap {
+    pub worst: f64,
+    pub field: &'static str,
+}
+
+impl Gap {
+    fn add(&mut self, field: &'static str, a: &[f64], b: &[f64]) {
+        assert_eq!(a.len(), b.len());
+        let scale = a.iter().fold(0.0_f64, |m, x| m.max(x.abs()));
+        if scale == 0.0 {
+            return;
+        }
+        let diff = a
+            .iter()
+            .zip(b)
+            .fold(0.0_f64, |m, (x, y)| m.max((x - y).abs()));
+        if diff / scale >= self.worst {
+            self.worst = diff / scale;
+            self.field = field;
+        }
+    }
+}
+
+fn flat<D: Dimension>(v: &[D::Vector]) -> Vec<f64> {
+    v.iter().flat_map(|x| x.to_array3()).collect()
+}
+
+/// The gap between `a` and `b` over position, velocity, density, specific energy, h,
+/// the deviatoric stress and the damage.
+pub fn gap_of<D: Dimension>(
+    a: &Simulation<D, KernelChoice>,
+    b: &Simulation<D, KernelChoice>,
+) -> Gap {
+    let (pa, pb) = (&a.state.particles, &b.state.particles);
+    let mut gap = Gap::default();
+    gap.add(
+        "position",
+        &flat::<D>(&pa.position),
+        &flat::<D>(&pb.position),
+    );
+    gap.add(
+        "velocity",
+        &flat::<D>(&pa.velocity),
+        &flat::<D>(&pb.velocity),
+    );
+    gap.add("density", &pa.density, &pb.density);
+    gap.add("specific energy", &pa.specific_energy, &pb.specific_energy);
+    gap.add("h", &pa.smoothing_length, &pb.smoothing_length);
+    let stress = |s: &Simulation<D, KernelChoice>| -> Vec<f64> {
+        s.state
+            .stress
+            .iter()
+            .flat_map(|m| m.to_cols_array())
+            .collect()
+    };
+    gap.add("stress", &stress(a), &stress(b));
+    gap.add("damage", &a.state.damage_state, &b.state.damage_state);
+    gap
+}
+
+/// Calls the generic `$compare(&mut a, &mut b, args…)` on two `SceneSimulation`s of one
+/// geometry (a scene builds one).
+#[macro_export]
+macro_rules! on_both {
+    ($a:expr, $b:expr, $compare:ident $(, $arg:expr)*) => {
+        match ($a, $b) {
+            (SceneSimulation::ThreeD(mut a), SceneSimulation::ThreeD(mut b)) => {
+                $compare(&mut a, &mut b $(, $arg)*)
+            }
+            (SceneSimulation::Rz(mut a), SceneSimulation::Rz(mut b))
+            | (SceneSimulation::Plane(mut a), SceneSimulation::Plane(mut b)) => {
+                $compare(&mut a, &mut b $(, $arg)*)
+            }
+            (SceneSimulation::Line(mut a), SceneSimulation::Line(mut b)) => {
+                $compare(&mut a, &mut b $(, $arg)*)
+            }
+            _ => unreachable!("one scene builds one geometry"),
+        }
+    };
+}
