@@ -27,7 +27,7 @@ mod finish;
 mod history;
 mod measure;
 mod plots;
-mod progress;
+pub(crate) mod progress;
 mod snapshot;
 mod stop;
 mod summary;

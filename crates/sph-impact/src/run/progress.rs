@@ -6,6 +6,13 @@ use crate::scene::estimate_human_seconds;
 use std::io::{IsTerminal, Write};
 use std::time::{Duration, Instant};
 
+/// The bar of a share `done` in [0, 1]: `[######------------------]`, 24 wide.
+pub(crate) fn bar(done: f64) -> String {
+    let width = 24;
+    let filled = ((done.clamp(0.0, 1.0) * width as f64).round() as usize).min(width);
+    format!("[{}{}]", "#".repeat(filled), "-".repeat(width - filled))
+}
+
 /// Prints progress unless quiet.
 pub(crate) struct Progress {
     quiet: bool,
@@ -64,12 +71,9 @@ impl Progress {
         } else {
             "?".into()
         };
-        let width = 24;
-        let filled = (done * width as f64).round() as usize;
         let line = format!(
-            "[{}{}] t = {:.3e}/{:.3e} s ({:5.1} %) | step {} | {:.2e} particle-steps/s | ETA {}",
-            "#".repeat(filled),
-            "-".repeat(width - filled),
+            "{} t = {:.3e}/{:.3e} s ({:5.1} %) | step {} | {:.2e} particle-steps/s | ETA {}",
+            bar(done),
             t,
             self.end_time,
             100.0 * done,
@@ -92,5 +96,20 @@ impl Progress {
         if !self.quiet && self.terminal {
             eprintln!();
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::bar;
+
+    #[test]
+    fn the_bar_fills_with_the_share_done_and_stays_24_wide() {
+        assert_eq!(bar(0.0), format!("[{}]", "-".repeat(24)));
+        assert_eq!(bar(0.5), format!("[{}{}]", "#".repeat(12), "-".repeat(12)));
+        assert_eq!(bar(1.0), format!("[{}]", "#".repeat(24)));
+        // Outside [0, 1] (a resumed run's rounding): clamped to the ends, never wider.
+        assert_eq!(bar(1.2), bar(1.0));
+        assert_eq!(bar(-0.1), bar(0.0));
     }
 }

@@ -48,6 +48,17 @@ const PENALTY: f64 = 1.0e6;
 /// The step of the sensitivity runs, as a share of each parameter's (scaled) range.
 const SENSITIVITY_STEP: f64 = 0.05;
 
+/// Two points of the search closer than this in every unit coordinate (a share of each
+/// parameter's scaled range) are the same run. Nelder–Mead's reflections come back to a
+/// point it has run only to round-off (through the logarithm of a log-scale parameter,
+/// 9.8e6 returns as 9.799999999999996e6); no run of a simulation tells such points apart.
+const SAME_POINT: f64 = 1.0e-9;
+
+/// Whether unit coordinates `a` and `b` are the same point of the search ([`SAME_POINT`]).
+fn same_point(a: &[f64], b: &[f64]) -> bool {
+    a.len() == b.len() && a.iter().zip(b).all(|(x, y)| (x - y).abs() <= SAME_POINT)
+}
+
 /// A free parameter: a scene path (study::scene_path) and its bounds.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -637,8 +648,9 @@ struct Search<'a> {
     dir: &'a Path,
     options: &'a StudyOptions,
     runs: RefCell<Vec<Evaluation>>,
-    /// (bits of the unit coordinates, objective) of every point asked for.
-    seen: RefCell<Vec<(Vec<u64>, f64)>>,
+    /// (unit coordinates, objective) of every point asked for; a point within
+    /// [`SAME_POINT`] of one of them is not run again.
+    seen: RefCell<Vec<(Vec<f64>, f64)>>,
     failure: RefCell<Option<StudyError>>,
 }
 
@@ -837,8 +849,7 @@ impl Search<'_> {
     }
 
     fn cost(&self, u: &[f64]) -> Result<f64, String> {
-        let key: Vec<u64> = u.iter().map(|x| x.to_bits()).collect();
-        if let Some((_, c)) = self.seen.borrow().iter().find(|(k, _)| *k == key) {
+        if let Some((_, c)) = self.seen.borrow().iter().find(|(k, _)| same_point(k, u)) {
             return Ok(*c);
         }
         // Outside the bounds or the constraints: not run.
@@ -884,7 +895,7 @@ impl Search<'_> {
             self.runs.borrow_mut().push(e);
             c
         };
-        self.seen.borrow_mut().push((key, cost));
+        self.seen.borrow_mut().push((u.to_vec(), cost));
         Ok(cost)
     }
 }
@@ -1181,4 +1192,37 @@ fn write_report(fit: &Fit, report: &FitReport, dir: &Path) -> Result<(), StudyEr
         crate::study::runner::write_whole(&path, text.as_bytes())?;
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The Weibull threshold of the model-pair fits: log scale, the search's reflection
+    /// back to its start.
+    fn threshold() -> Free {
+        Free {
+            path: "body.target.material.damage.sigma_b".into(),
+            min: 1.0e6,
+            max: 1.0e8,
+            scale: Spacing::Log,
+            start: Some(9.8e6),
+        }
+    }
+
+    #[test]
+    fn a_point_back_at_a_run_one_to_round_off_is_that_run() {
+        let f = threshold();
+        let u0 = f.unit(9.8e6);
+        // Nelder–Mead's reflection of the simplex [u0, u0 + 0.2] about u0 + 0.2 and back,
+        // as the search computes it: the start to round-off, not to the bit.
+        let back = (u0 + 0.2) + ((u0 + 0.2) - (u0 + 0.4));
+        assert_ne!(back.to_bits(), u0.to_bits());
+        assert!(same_point(&[u0], &[back]));
+        assert!((f.value(back) / 9.8e6 - 1.0).abs() < 1e-12);
+        // A real step of the search, however small against the range, is a new point.
+        assert!(!same_point(&[u0], &[u0 + 1e-6]));
+        assert!(!same_point(&[u0, 0.5], &[u0, 0.5 + 1e-6]));
+        assert!(!same_point(&[u0], &[u0, 0.5]));
+    }
 }

@@ -21,6 +21,7 @@ use crate::study::error::StudyError;
 use crate::study::study::{Study, describe};
 use crate::study::table::{PointStatus, StudyTable};
 use serde::{Deserialize, Serialize};
+use std::io::{IsTerminal, Write};
 use std::path::{Path, PathBuf};
 use std::sync::Mutex;
 use std::sync::atomic::{AtomicUsize, Ordering};
@@ -287,14 +288,18 @@ pub(crate) fn write_whole(path: &Path, bytes: &[u8]) -> Result<(), StudyError> {
     crate::run::atomic::write_bytes(path, bytes).map_err(|e| StudyError::failed(e.to_string()))
 }
 
-/// Progress lines on standard error: each point as it starts and ends, with the count
-/// done and the time left estimated from the mean wall time of the points run so far.
+/// The study's progress on standard error: a bar over its points (ended of those to run,
+/// failed, running, the time left from the mean wall time of the points ended so far). On
+/// a terminal the bar is redrawn in place and a failed point's error is printed above it;
+/// to a file (a log) each point's start and end is a line with the bar.
 struct Progress {
     quiet: bool,
+    terminal: bool,
     start: Instant,
     to_run: usize,
     total: usize,
-    state: Mutex<(usize, usize)>,
+    /// (ended, failed, running).
+    state: Mutex<(usize, usize, usize)>,
 }
 
 impl Progress {
@@ -307,46 +312,118 @@ impl Progress {
         }
         Self {
             quiet,
+            terminal: std::io::stderr().is_terminal(),
             start: Instant::now(),
             to_run,
             total,
-            state: Mutex::new((0, 0)),
+            state: Mutex::new((0, 0, 0)),
         }
     }
 
+    /// The bar and its counts.
+    fn line(&self, (ended, failed, running): (usize, usize, usize)) -> String {
+        let left = if ended > 0 {
+            let elapsed = self.start.elapsed().as_secs_f64();
+            let left = (elapsed / ended as f64) * (self.to_run - ended) as f64;
+            crate::scene::estimate_human_seconds(left)
+        } else {
+            "?".into()
+        };
+        format!(
+            "study: {} {ended} of {} points ended ({failed} failed), {running} running, about {left} left",
+            crate::run::progress::bar(ended as f64 / self.to_run.max(1) as f64),
+            self.to_run,
+        )
+    }
+
+    /// Prints `event` (a line of its own on a file, above the bar on a terminal; none
+    /// when empty) and the bar.
+    fn show(&self, event: &str, state: (usize, usize, usize)) {
+        let line = self.line(state);
+        let mut err = std::io::stderr().lock();
+        if self.terminal {
+            if !event.is_empty() {
+                let _ = writeln!(err, "\r{event}\x1b[K");
+            }
+            let _ = write!(err, "\r{line}\x1b[K");
+            if state.0 == self.to_run {
+                let _ = writeln!(err);
+            }
+        } else {
+            if !event.is_empty() {
+                let _ = writeln!(err, "{event}");
+            }
+            let _ = writeln!(err, "{line}");
+        }
+        let _ = err.flush();
+    }
+
     fn started(&self, point: &Point) {
-        if !self.quiet {
-            eprintln!(
+        let mut s = self.state.lock().unwrap();
+        s.2 += 1;
+        if self.quiet {
+            return;
+        }
+        // A point starting is news in a log, not on a terminal, where the bar counts it.
+        let event = if self.terminal {
+            String::new()
+        } else {
+            format!(
                 "study: point {} of {} started: {}",
                 point.index,
                 self.total,
                 describe(point)
-            );
-        }
+            )
+        };
+        self.show(&event, *s);
     }
 
     fn ended(&self, point: &Point, outcome: &Outcome) {
         let mut s = self.state.lock().unwrap();
         s.0 += 1;
+        s.2 -= 1;
         if matches!(outcome, Outcome::Failed(_)) {
             s.1 += 1;
         }
         if self.quiet {
             return;
         }
-        let (ended, failed) = *s;
-        let elapsed = self.start.elapsed().as_secs_f64();
-        let left = (elapsed / ended as f64) * (self.to_run - ended) as f64;
-        let what = match outcome {
-            Outcome::Done(t) => format!("done in {}", crate::scene::estimate_human_seconds(*t)),
-            Outcome::Failed(e) => format!("FAILED: {e}"),
-            Outcome::Stopped => "stopped (resumes from its checkpoint)".into(),
+        let event = match outcome {
+            Outcome::Failed(e) => format!("study: point {} FAILED: {e}", point.index),
+            Outcome::Stopped => format!(
+                "study: point {} stopped (resumes from its checkpoint)",
+                point.index
+            ),
+            Outcome::Done(t) if !self.terminal => format!(
+                "study: point {} done in {}",
+                point.index,
+                crate::scene::estimate_human_seconds(*t)
+            ),
+            Outcome::Done(_) => String::new(),
         };
-        eprintln!(
-            "study: point {} {what}; {ended} of {} ended ({failed} failed), about {} left",
-            point.index,
-            self.to_run,
-            crate::scene::estimate_human_seconds(left)
+        self.show(&event, *s);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_study_bar_counts_points_ended_failed_and_running() {
+        let p = Progress::new(true, 8, 10);
+        assert_eq!(
+            p.line((0, 0, 2)),
+            "study: [------------------------] 0 of 8 points ended (0 failed), 2 running, about ? left"
+        );
+        let line = p.line((2, 1, 2));
+        assert!(
+            line.starts_with("study: [######------------------] 2 of 8 points ended (1 failed), 2 running, about "),
+            "{line}"
+        );
+        assert!(
+            p.line((8, 1, 0))
+                .contains("[########################] 8 of 8")
         );
     }
 }
