@@ -383,24 +383,49 @@ pub fn run_scene(
     out: Option<&Path>,
     options: &crate::run::RunOptions,
 ) -> Result<crate::run::RunSummary, CommandError> {
+    run_scene_over(scene_path, out, options, &crate::solver::OneRank)
+}
+
+/// The command error of a run's error: its exit code by kind.
+fn run_error(e: crate::run::RunError) -> CommandError {
+    if e.is_interrupted() {
+        CommandError {
+            code: CommandError::INTERRUPTED,
+            message: e.to_string(),
+        }
+    } else if e.is_bad_input() {
+        CommandError::bad_input(e)
+    } else {
+        CommandError::failed(e)
+    }
+}
+
+/// [`run_scene`] as rank 0 of `ranks` (`mpirun -n N sph-impact run SCENE`; docs/mpi.md):
+/// the other ranks call [`follow_scene`] with the same arguments.
+pub fn run_scene_over(
+    scene_path: &Path,
+    out: Option<&Path>,
+    options: &crate::run::RunOptions,
+    ranks: &dyn crate::solver::Ranks,
+) -> Result<crate::run::RunSummary, CommandError> {
     let scene = crate::scene::Scene::from_toml_file(scene_path).map_err(CommandError::bad_input)?;
     let dir = run_directory(scene_path, &scene, out);
-    let summary = crate::run::run(&scene, &dir, options).map_err(|e| {
-        if e.is_interrupted() {
-            CommandError {
-                code: CommandError::INTERRUPTED,
-                message: e.to_string(),
-            }
-        } else if e.is_bad_input() {
-            CommandError::bad_input(e)
-        } else {
-            CommandError::failed(e)
-        }
-    })?;
+    let summary = crate::run::run_over(&scene, &dir, options, ranks).map_err(run_error)?;
     if !options.quiet {
         write_stdout(&result_lines(&dir, &summary))?;
     }
     Ok(summary)
+}
+
+/// `sph-impact run SCENE` on a rank other than 0 of `ranks`: steps the scene in lockstep
+/// with rank 0 ([`crate::run::follow`]), which writes the run directory and prints.
+pub fn follow_scene(
+    scene_path: &Path,
+    options: &crate::run::RunOptions,
+    ranks: &dyn crate::solver::Ranks,
+) -> Result<(), CommandError> {
+    let scene = crate::scene::Scene::from_toml_file(scene_path).map_err(CommandError::bad_input)?;
+    crate::run::follow(&scene, options, ranks).map_err(run_error)
 }
 
 /// The result lines `sph-impact run` prints: the run directory, crater, β and cost.

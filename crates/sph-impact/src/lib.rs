@@ -67,6 +67,8 @@
 pub mod cli;
 pub mod input;
 pub mod materials;
+#[cfg(feature = "mpi")]
+pub mod mpi_world;
 pub mod plot;
 pub mod run;
 pub mod scene;

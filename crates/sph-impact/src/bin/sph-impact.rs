@@ -7,6 +7,7 @@
 use clap::{Parser, Subcommand};
 use sph_impact::cli::CommandError;
 use sph_impact::run::{RunOptions, StopFlag};
+use sph_impact::solver::Ranks;
 use sph_impact::verify::{Problem, SedovDeposit};
 use std::path::PathBuf;
 use std::process::ExitCode;
@@ -169,30 +170,44 @@ enum Command {
 
 fn main() -> ExitCode {
     let cli = Cli::parse();
+    // With the `mpi` feature every rank runs the command (`mpirun -n N sph-impact run
+    // SCENE`; docs/mpi.md); an error on one stops them all.
+    #[cfg(feature = "mpi")]
+    let result = sph_impact::mpi_world::over_world(|ranks| command(cli, ranks));
+    #[cfg(not(feature = "mpi"))]
+    let result = command(cli, &sph_impact::solver::OneRank);
+    finish(result)
+}
+
+/// The command of `cli`, as rank `ranks.rank()` of `ranks.size()`.
+fn command(cli: Cli, ranks: &dyn Ranks) -> Result<(), CommandError> {
     // Checked before the pool is built: rayon takes 0 for "all cores" and would try to
     // start any number of threads.
-    if let Some(t) = cli.threads
-        && let Err(e) = sph_impact::cli::check_threads(t)
-    {
-        eprintln!("error: {e}");
-        return ExitCode::from(e.code);
+    if let Some(t) = cli.threads {
+        sph_impact::cli::check_threads(t)?;
     }
     if let Some(t) = cli.threads
         && let Err(e) = rayon::ThreadPoolBuilder::new()
             .num_threads(t)
             .build_global()
     {
-        eprintln!("error: cannot start {t} threads: {e}");
-        return ExitCode::from(CommandError::BAD_INPUT);
+        return Err(CommandError::bad_input(format!(
+            "cannot start {t} threads: {e}"
+        )));
     }
     let Some(command) = cli.command else {
-        eprintln!(
-            "error: no command given: run, check, study, fit, materials or verify (`sph-impact --help` \
-             says more)"
-        );
-        return ExitCode::from(CommandError::BAD_INPUT);
+        return Err(CommandError::bad_input(
+            "no command given: run, check, study, fit, materials or verify (`sph-impact --help` \
+             says more)",
+        ));
     };
-    let result = match command {
+    if ranks.size() > 1 && !matches!(command, Command::Run { .. }) {
+        return Err(CommandError::bad_input(format!(
+            "only `run` runs over several MPI ranks ({} here): run the others on one",
+            ranks.size()
+        )));
+    }
+    match command {
         Command::Run {
             scene,
             out,
@@ -218,11 +233,13 @@ fn main() -> ExitCode {
                 stop: StopFlag::new(),
             };
             // SIGINT/SIGTERM finish the step, write a checkpoint and a partial summary,
-            // and exit with 130.
-            if let Err(code) = catch_signals(&options.stop) {
-                return code;
+            // and exit with 130 (on rank 0, which tells the other ranks to end).
+            catch_signals(&options.stop)?;
+            if ranks.rank() == 0 {
+                sph_impact::cli::run_scene_over(&scene, out.as_deref(), &options, ranks).map(|_| ())
+            } else {
+                sph_impact::cli::follow_scene(&scene, &options, ranks)
             }
-            sph_impact::cli::run_scene(&scene, out.as_deref(), &options).map(|_| ())
         }
         Command::Check {
             scene,
@@ -243,11 +260,7 @@ fn main() -> ExitCode {
             quiet,
         } => {
             if emit.is_some() {
-                return finish(sph_impact::cli::study_emit_slurm(
-                    &study,
-                    out.as_deref(),
-                    quiet,
-                ));
+                return sph_impact::cli::study_emit_slurm(&study, out.as_deref(), quiet);
             }
             let options = sph_impact::study::StudyOptions {
                 // 0: the cores divided by the study's threads per run (cli::study).
@@ -258,9 +271,7 @@ fn main() -> ExitCode {
                 quiet,
                 stop: StopFlag::new(),
             };
-            if let Err(code) = catch_signals(&options.stop) {
-                return code;
-            }
+            catch_signals(&options.stop)?;
             sph_impact::cli::study(&study, out.as_deref(), &options).map(|_| ())
         }
         Command::Fit {
@@ -274,9 +285,7 @@ fn main() -> ExitCode {
                 quiet,
                 ..Default::default()
             };
-            if let Err(code) = catch_signals(&options.stop) {
-                return code;
-            }
+            catch_signals(&options.stop)?;
             sph_impact::cli::fit(&fit, out.as_deref(), &options).map(|_| ())
         }
         Command::Materials { json } => sph_impact::cli::materials(json),
@@ -302,17 +311,14 @@ fn main() -> ExitCode {
             },
             deposit,
         ),
-    };
-    finish(result)
+    }
 }
 
 /// SIGINT and SIGTERM raise `stop` (the run, or each point of a study or fit, ends at a
-/// checkpoint); the exit code to return when they cannot be caught.
-fn catch_signals(stop: &StopFlag) -> Result<(), ExitCode> {
-    stop.on_signals().map_err(|e| {
-        eprintln!("error: cannot catch SIGINT/SIGTERM: {e}");
-        ExitCode::from(CommandError::FAILED)
-    })
+/// checkpoint).
+fn catch_signals(stop: &StopFlag) -> Result<(), CommandError> {
+    stop.on_signals()
+        .map_err(|e| CommandError::failed(format!("cannot catch SIGINT/SIGTERM: {e}")))
 }
 
 /// The exit code of a command's result, with its error printed.

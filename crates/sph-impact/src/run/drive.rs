@@ -6,12 +6,13 @@ use crate::run::arrays::Arrays;
 use crate::run::checkpoint::RunCheckpoint;
 use crate::run::error::RunError;
 use crate::run::history::{History, HistoryRow};
+use crate::run::lockstep::{self, Command};
 use crate::run::measure::{BetaMeasure, Measurer};
 use crate::run::progress::Progress;
 use crate::run::summary::{RunSummary, Totals};
 use crate::run::{RunOptions, finish, snapshot};
 use crate::scene::{BodyInfo, Scene, SceneDimension, SimOf};
-use crate::solver::StepInfo;
+use crate::solver::{Ranks, StepInfo};
 use sph_diagnostics::Pvd;
 use std::path::Path;
 use std::time::Instant;
@@ -26,6 +27,8 @@ pub(crate) struct Job<'a> {
     pub threads: usize,
     /// When the run started (set-up included).
     pub wall: Instant,
+    /// The ranks that share the steps (this is rank 0; run/lockstep.rs).
+    pub ranks: &'a dyn Ranks,
 }
 
 /// What the loop hands to the final diagnostics.
@@ -174,6 +177,7 @@ impl Job<'_> {
                 path: from.display().to_string(),
                 reason: e.to_string(),
             })?;
+            lockstep::send_state::<D>(self.ranks, &sim)?;
             let history = History::resume(&history_path, history_rows)?;
             // What the run wrote after the checkpoint is written again; none of it may
             // stay beside the resumed run's files.
@@ -227,7 +231,9 @@ impl Job<'_> {
         while sim.state.time < end_time - tol {
             let target = next_snapshot.min(end_time);
             particle_steps += sim.state.particles.len() as u64;
-            let info = match sim.step(target - sim.state.time) {
+            let max_dt = target - sim.state.time;
+            lockstep::tell(self.ranks, Command::Step(max_dt));
+            let info = match sim.step_over(max_dt, self.ranks) {
                 Ok(info) => info,
                 Err(e) => return Err(failed(&sim, e)),
             };
@@ -282,6 +288,7 @@ impl Job<'_> {
                 break;
             }
         }
+        lockstep::tell(self.ranks, Command::Done);
         let stepping = before.stepping + t_step.elapsed().as_secs_f64();
         progress.finish(sim.state.time, steps);
         history.flush()?;

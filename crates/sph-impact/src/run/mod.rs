@@ -25,6 +25,7 @@ mod drive;
 mod error;
 mod finish;
 mod history;
+mod lockstep;
 mod measure;
 mod plots;
 pub(crate) mod progress;
@@ -40,6 +41,7 @@ pub use stop::StopFlag;
 pub use summary::{BodyDamageSummary, RunSummary, Totals};
 
 use crate::scene::{Built, In3d, InLine, InPlane, InRz, Scene, SceneSimulation};
+use crate::solver::{OneRank, Ranks};
 use std::path::Path;
 use std::time::Instant;
 
@@ -96,6 +98,18 @@ impl Default for RunOptions {
 
 /// Runs `scene` and writes its outputs into `out_dir` (created if needed).
 pub fn run(scene: &Scene, out_dir: &Path, options: &RunOptions) -> Result<RunSummary, RunError> {
+    run_over(scene, out_dir, options, &OneRank)
+}
+
+/// [`run`] as rank 0 of `ranks` (solver/ranks.rs; docs/mpi.md): the steps' pair passes
+/// are shared with the other ranks, which call [`follow`] with the same scene and
+/// options; rank 0 alone writes the run directory. On one rank, [`run`].
+pub fn run_over(
+    scene: &Scene,
+    out_dir: &Path,
+    options: &RunOptions,
+    ranks: &dyn Ranks,
+) -> Result<RunSummary, RunError> {
     // The end time and the resolution scale are checked with the scene
     // (`Scene::preflight`), as `check` checks them.
     let end_time = options.end_time.unwrap_or(scene.end_time);
@@ -117,20 +131,44 @@ pub fn run(scene: &Scene, out_dir: &Path, options: &RunOptions) -> Result<RunSum
             reason: "must be at least 1",
         });
     }
-    let pool = match options.threads {
-        Some(n) if !(1..=crate::cli::MAX_THREADS).contains(&n) => {
-            return Err(RunError::Option {
-                option: "threads",
-                value: n as f64,
-                reason: "must be 1 to 1024 (sph_impact::cli::MAX_THREADS)",
-            });
-        }
-        Some(n) => rayon::ThreadPoolBuilder::new().num_threads(n).build(),
-        None => rayon::ThreadPoolBuilder::new().build(),
-    }
-    .map_err(|e| RunError::Diagnostics(format!("cannot start the worker threads: {e}")))?;
+    let pool = worker_pool(options.threads)?;
     let threads = pool.current_num_threads();
-    pool.install(|| run_in_pool(scene, out_dir, options, end_time, threads))
+    pool.install(|| run_in_pool(scene, out_dir, options, end_time, threads, ranks))
+}
+
+/// A rank other than 0 of a run over `ranks` ([`run_over`]): builds `scene` as rank 0
+/// does and steps it in lockstep with rank 0 until the run ends; writes nothing.
+pub fn follow(scene: &Scene, options: &RunOptions, ranks: &dyn Ranks) -> Result<(), RunError> {
+    let end_time = options.end_time.unwrap_or(scene.end_time);
+    let pool = worker_pool(options.threads)?;
+    pool.install(|| {
+        let preflight = scene.preflight(options.resolution_scale, Some(end_time))?;
+        let Built { simulation, .. } = scene.build_placed(&preflight.placed)?;
+        match simulation {
+            SceneSimulation::ThreeD(sim) => lockstep::follow::<In3d>(ranks, sim, options.resume),
+            SceneSimulation::Rz(sim) => lockstep::follow::<InRz>(ranks, sim, options.resume),
+            SceneSimulation::Plane(sim) => lockstep::follow::<InPlane>(ranks, sim, options.resume),
+            SceneSimulation::Line(sim) => lockstep::follow::<InLine>(ranks, sim, options.resume),
+        }
+    })
+}
+
+/// The run's worker threads: `threads`, else rayon's default.
+fn worker_pool(threads: Option<usize>) -> Result<rayon::ThreadPool, RunError> {
+    match threads {
+        Some(n) if !(1..=crate::cli::MAX_THREADS).contains(&n) => Err(RunError::Option {
+            option: "threads",
+            value: n as f64,
+            reason: "must be 1 to 1024 (sph_impact::cli::MAX_THREADS)",
+        }),
+        Some(n) => rayon::ThreadPoolBuilder::new()
+            .num_threads(n)
+            .build()
+            .map_err(|e| RunError::Diagnostics(format!("cannot start the worker threads: {e}"))),
+        None => rayon::ThreadPoolBuilder::new()
+            .build()
+            .map_err(|e| RunError::Diagnostics(format!("cannot start the worker threads: {e}"))),
+    }
 }
 
 fn run_in_pool(
@@ -139,6 +177,7 @@ fn run_in_pool(
     options: &RunOptions,
     end_time: f64,
     threads: usize,
+    ranks: &dyn Ranks,
 ) -> Result<RunSummary, RunError> {
     let wall = Instant::now();
     // Refused before the set-up's work; cleared (with --overwrite) only once the scene
@@ -165,6 +204,7 @@ fn run_in_pool(
         end_time,
         threads,
         wall,
+        ranks,
     };
     match simulation {
         SceneSimulation::ThreeD(sim) => job.run::<In3d>(sim, bodies),

@@ -25,6 +25,7 @@ use crate::solver::pair_kernel::{
     PairKernel, ScalarPairKernel, TensorPairKernel, equivalent_radius,
 };
 use crate::solver::pair_rules::{NoPairRule, PairRule};
+use crate::solver::ranks::{self, OneRank, Ranks};
 use crate::solver::state::{Extended, Ghosts, PlacedGhost, State};
 use crate::solver::timestep::{TimestepVote, acceleration_vote, cfl_vote, density_vote};
 use rayon::prelude::*;
@@ -36,6 +37,7 @@ use sph_core::{
 use sph_damage::DamageForm;
 use sph_kernel::Kernel;
 use sph_riemann::ViscositySoundSpeed;
+use std::ops::Range;
 use std::time::Instant;
 
 mod advance;
@@ -63,6 +65,9 @@ pub struct PhaseTimes {
     pub pairs: f64,
     /// State updates, smoothing lengths, checks.
     pub integration: f64,
+    /// The ranks' gathers of the pair passes' rows (0 on one rank; solver/ranks.rs).
+    #[serde(default)]
+    pub exchange: f64,
     /// Particle-derivative evaluations (particles × stages).
     pub derivative_evaluations: u64,
     /// Neighbours listed for those particles, summed over the evaluations: the mean
@@ -74,7 +79,13 @@ pub struct PhaseTimes {
 impl PhaseTimes {
     /// Total of the phases.
     pub fn total(&self) -> f64 {
-        self.neighbours + self.setup + self.eos + self.gradients + self.pairs + self.integration
+        self.neighbours
+            + self.setup
+            + self.eos
+            + self.gradients
+            + self.pairs
+            + self.integration
+            + self.exchange
     }
 }
 
@@ -493,11 +504,18 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
     /// for post-mortem output. The step works on the state in place rather than on a copy
     /// of it: one state fewer at the step's memory peak.
     pub fn step(&mut self, max_dt: f64) -> Result<StepInfo, SolverError> {
+        self.step_over(max_dt, &OneRank)
+    }
+
+    /// [`Self::step`] with its pair passes shared out among `ranks` (solver/ranks.rs):
+    /// every rank calls it with the same state and `max_dt`, and every rank ends the
+    /// step with the same state, the same bits as [`Self::step`] gives.
+    pub fn step_over(&mut self, max_dt: f64, ranks: &dyn Ranks) -> Result<StepInfo, SolverError> {
         let mut s0_state = std::mem::take(&mut self.state);
         // One search per step (NeighbourSearch::EachStep): the first stage keeps its list
         // and ghosts for the second.
         let per_step = self.scheme.neighbour_search == NeighbourSearch::EachStep;
-        let (s0, topology) = match self.stage(&mut s0_state, None, per_step) {
+        let (s0, topology) = match self.stage(&mut s0_state, None, per_step, ranks) {
             Ok(stage) => stage,
             Err(e) => return Err(self.put_back(s0_state, e)),
         };
@@ -566,7 +584,7 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
         // its own (peak memory per particle).
         drop(s0);
         self.timings.integration += t0.elapsed().as_secs_f64();
-        let stage = self.stage(&mut half, topology, false);
+        let stage = self.stage(&mut half, topology, false, ranks);
         half.swap_constants(&mut s0_state);
         let (s1, _) = match stage {
             Ok(stage) => stage,
@@ -666,7 +684,8 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
     pub fn sync_density(&mut self) -> Result<(), SolverError> {
         if self.scheme.density == DensityForm::Summation {
             let mut s = self.state.clone();
-            self.stage(&mut s, None, false)?;
+            // On one rank: the state is every rank's (solver/ranks.rs).
+            self.stage(&mut s, None, false, &OneRank)?;
             self.state.particles.density = s.particles.density;
         }
         Ok(())

@@ -19,6 +19,27 @@ pub(crate) struct Gradients<D: Dimension> {
     pub energy: D::Vector,
 }
 
+impl<D: Dimension> Flat for Gradients<D> {
+    const LEN: usize = 2 * D::DIM * D::DIM + 2 * D::DIM + 1;
+    fn put(&self, out: &mut Vec<f64>) {
+        put_tensor(&self.velocity, out);
+        put_vector(self.pressure, out);
+        out.push(self.omega);
+        put_tensor(&self.strain_velocity, out);
+        put_vector(self.energy, out);
+    }
+    fn get(v: &[f64]) -> Self {
+        let (t, d) = (D::DIM * D::DIM, D::DIM);
+        Gradients {
+            velocity: get_tensor(v),
+            pressure: get_vector(&v[t..]),
+            omega: v[t + d],
+            strain_velocity: get_tensor(&v[t + d + 1..]),
+            energy: get_vector(&v[2 * t + d + 1..]),
+        }
+    }
+}
+
 /// The result of pass 1: the gradients, and the linear gradient corrections M_i⁻ᵀ
 /// (identity where M is singular) only when `gradient_correction` or
 /// `momentum_correction` is on — otherwise
@@ -89,15 +110,17 @@ impl<D: Dimension> PairGradients<D> {
     }
 }
 
-/// Pass 1.
+/// Pass 1 over the blocks of rows `blocks` (of `rows` rows each; all of them in a single
+/// process).
 pub(crate) fn gradients<D: Dimension, P: PairKernel<D>>(
     ext: &Extended<'_, D>,
     list: &NeighborList,
     pk: &P,
     options: GradientOptions,
     rows: usize,
+    blocks: Range<usize>,
 ) -> GradientSet<D> {
-    per_geometry!(gradients_in(ext, list, pk, options, rows))
+    per_geometry!(gradients_in(ext, list, pk, options, rows, blocks))
 }
 
 /// [`gradients`] for one geometry (`RZ`), fixed at compile time.
@@ -107,6 +130,7 @@ fn gradients_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
     pk: &P,
     options: GradientOptions,
     rows: usize,
+    blocks: Range<usize>,
 ) -> GradientSet<D> {
     let GradientOptions {
         correct,
@@ -260,15 +284,19 @@ fn gradients_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
     } else {
         Vec::new()
     };
+    // Only the blocks `blocks` (this rank's; solver/ranks.rs): the other rows stay unset.
+    let own = (blocks.start * rows).min(n)..(blocks.end * rows).min(n);
     if keep {
-        each.par_chunks_mut(rows)
-            .zip(correction.par_chunks_mut(rows))
+        each[own.clone()]
+            .par_chunks_mut(rows)
+            .zip(correction[own].par_chunks_mut(rows))
             .enumerate()
-            .for_each(|(b, (out, corr))| fill(b, out, Some(corr)));
+            .for_each(|(b, (out, corr))| fill(blocks.start + b, out, Some(corr)));
     } else {
-        each.par_chunks_mut(rows)
+        each[own]
+            .par_chunks_mut(rows)
             .enumerate()
-            .for_each(|(b, out)| fill(b, out, None));
+            .for_each(|(b, out)| fill(blocks.start + b, out, None));
     }
     GradientSet { each, correction }
 }

@@ -25,10 +25,12 @@ use crate::solver::config::{DensityForm, EnergyForm, MomentumForm, SchemeConfig}
 use crate::solver::pair_blocks;
 use crate::solver::pair_kernel::PairKernel;
 use crate::solver::pair_rules::{self, DiffusionPair, Side, ViscosityPair, decoupled};
+use crate::solver::ranks::{Flat, get_tensor, get_vector, put_tensor, put_vector};
 use crate::solver::state::Extended;
 use rayon::prelude::*;
 use sph_core::{Dimension, NeighborList, Tensor, Vector};
 use sph_riemann::{PairInterface, SideState, interface_velocity, reconstruct};
+use std::ops::Range;
 
 /// Whether the extended state is an RZ one (it carries each particle's radius). The gather
 /// loops are dispatched on it once per call, so that each geometry runs its own

@@ -19,6 +19,25 @@ pub(crate) struct Rates<D: Dimension> {
     pub work: f64,
 }
 
+impl<D: Dimension> Flat for Rates<D> {
+    const LEN: usize = D::DIM + 4;
+    fn put(&self, out: &mut Vec<f64>) {
+        out.push(self.drho);
+        put_vector(self.dv, out);
+        out.extend([self.de, self.approach, self.work]);
+    }
+    fn get(v: &[f64]) -> Self {
+        let d = D::DIM;
+        Rates {
+            drho: v[0],
+            dv: get_vector(&v[1..]),
+            de: v[d + 1],
+            approach: v[d + 2],
+            work: v[d + 3],
+        }
+    }
+}
+
 impl<D: Dimension> Rates<D> {
     const ZERO: Self = Rates {
         drho: 0.0,
@@ -135,17 +154,19 @@ pub(crate) struct PairRates<D: Dimension> {
     pub hoop_gauge: Vec<f64>,
 }
 
-/// Pass 2.
+/// Pass 2 over the blocks of rows `blocks` (of `rows` rows each; all of them in a single
+/// process): the other rows' rates and hoop gauges stay unset, and `boundary` lists
+/// only these blocks' particles.
 pub(crate) fn rates<D: Dimension, P: PairKernel<D>>(
     ext: &Extended<'_, D>,
     list: &NeighborList,
     pk: &P,
     grads: Option<&GradientSet<D>>,
     scheme: &SchemeConfig,
-    rows: usize,
+    (rows, blocks): (usize, Range<usize>),
     rule: &impl PairRule<D>,
 ) -> PairRates<D> {
-    per_geometry!(rates_in(ext, list, pk, grads, scheme, rows, rule))
+    per_geometry!(rates_in(ext, list, pk, grads, scheme, rows, blocks, rule))
 }
 
 /// [`rates`] for one geometry (`RZ`), fixed at compile time.
@@ -156,6 +177,7 @@ fn rates_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
     grads: Option<&GradientSet<D>>,
     scheme: &SchemeConfig,
     rows: usize,
+    blocks: Range<usize>,
     rule: &impl PairRule<D>,
 ) -> PairRates<D> {
     let visc = scheme.viscosity;
@@ -723,16 +745,19 @@ fn rates_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
         }
         boundary
     };
+    let own = (blocks.start * rows).min(n)..(blocks.end * rows).min(n);
     let boundary = if rz {
-        each.par_chunks_mut(rows)
-            .zip(hoop_gauge.par_chunks_mut(rows))
+        each[own.clone()]
+            .par_chunks_mut(rows)
+            .zip(hoop_gauge[own].par_chunks_mut(rows))
             .enumerate()
-            .flat_map_iter(|(b, (out, gauge))| fill(b, out, Some(gauge)))
+            .flat_map_iter(|(b, (out, gauge))| fill(blocks.start + b, out, Some(gauge)))
             .collect()
     } else {
-        each.par_chunks_mut(rows)
+        each[own]
+            .par_chunks_mut(rows)
             .enumerate()
-            .flat_map_iter(|(b, out)| fill(b, out, None))
+            .flat_map_iter(|(b, out)| fill(blocks.start + b, out, None))
             .collect()
     };
     PairRates {

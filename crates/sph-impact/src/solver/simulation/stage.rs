@@ -29,8 +29,9 @@ pub(super) struct Topology<D: Dimension> {
 }
 
 impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
-    /// Pass 1 (when `options` asks for it) and pass 2 with the pair kernel `pk`, and
-    /// the instant pass 2 began.
+    /// Pass 1 (when `options` asks for it) and pass 2 with the pair kernel `pk`, their
+    /// blocks of rows shared out among `ranks` (solver/ranks.rs), each gathered by all;
+    /// the instant pass 2 began, and the seconds of the gathers after pass 1 and pass 2.
     fn pair_passes<P: PairKernel<D>>(
         &self,
         ext: &Extended<'_, D>,
@@ -38,19 +39,59 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
         pk: &P,
         options: Option<GradientOptions>,
         rows: usize,
-    ) -> (Option<GradientSet<D>>, PairRates<D>, Instant) {
-        let g = options.map(|o| gradients(ext, list, pk, o, rows));
+        ranks: &dyn Ranks,
+    ) -> (Option<GradientSet<D>>, PairRates<D>, Instant, [f64; 2]) {
+        let n = ext.n_real;
+        let n_blocks = n.div_ceil(rows);
+        let size = ranks.size();
+        // Each block's cost: its rows' neighbours, and one per row.
+        let shares = if size == 1 {
+            std::iter::once(0..n_blocks).collect()
+        } else {
+            let costs: Vec<u64> = (0..n_blocks)
+                .map(|b| {
+                    (b * rows..((b + 1) * rows).min(n))
+                        .map(|i| list.count(i) as u64 + 1)
+                        .sum()
+                })
+                .collect();
+            ranks::shares(&costs, size)
+        };
+        let mine = shares[ranks.rank()].clone();
+        let rows_of: Vec<Range<usize>> = shares
+            .iter()
+            .map(|b| (b.start * rows).min(n)..(b.end * rows).min(n))
+            .collect();
+        let mut g = options.map(|o| gradients(ext, list, pk, o, rows, mine.clone()));
+        let t = Instant::now();
+        if size > 1
+            && let Some(g) = &mut g
+        {
+            ranks::gather_rows(ranks, &mut g.each, &rows_of);
+            if !g.correction.is_empty() {
+                ranks::gather_tensor_rows::<D>(ranks, &mut g.correction, &rows_of);
+            }
+        }
         let t3 = Instant::now();
-        let r = rates(
+        let exchange_gradients = (t3 - t).as_secs_f64();
+        let mut r = rates(
             ext,
             list,
             pk,
             g.as_ref(),
             &self.scheme,
-            rows,
+            (rows, mine),
             &self.pair_rule,
         );
-        (g, r, t3)
+        let t = Instant::now();
+        if size > 1 {
+            ranks::gather_rows(ranks, &mut r.each, &rows_of);
+            if !r.hoop_gauge.is_empty() {
+                ranks::gather_rows(ranks, &mut r.hoop_gauge, &rows_of);
+            }
+            r.boundary = ranks::gather_list(ranks, &r.boundary);
+        }
+        (g, r, t3, [exchange_gradients, t.elapsed().as_secs_f64()])
     }
 
     /// Particle spacing Δx_i = (smallest support semi-axis)/n_target.
@@ -72,6 +113,7 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
         state: &mut State<D>,
         reuse: Option<Topology<D>>,
         keep: bool,
+        ranks: &dyn Ranks,
     ) -> Result<(Stage<D>, Option<Topology<D>>), SolverError> {
         let t0 = Instant::now();
         let (pressure, mut sound_speed) = eos_pass(&state.particles, &self.materials);
@@ -248,16 +290,16 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
         let rows = self
             .pair_block_rows
             .unwrap_or_else(|| pair_blocks::block_rows(ext.n_real));
-        let (grads, rates_out, t3) = if ext.h_tensor.is_empty() {
+        let (grads, rates_out, t3, exchange) = if ext.h_tensor.is_empty() {
             let pk = ScalarPairKernel::new(self.kernel, &ext.h, D::DIM);
-            self.pair_passes(&ext, &list, &pk, need_grads.then_some(options), rows)
+            self.pair_passes(&ext, &list, &pk, need_grads.then_some(options), rows, ranks)
         } else {
             let pk = TensorPairKernel {
                 kernel: self.kernel,
                 h_tensor: &ext.h_tensor,
                 h: &ext.h,
             };
-            self.pair_passes(&ext, &list, &pk, need_grads.then_some(options), rows)
+            self.pair_passes(&ext, &list, &pk, need_grads.then_some(options), rows, ranks)
         };
         let PairRates {
             each: mut rates_out,
@@ -332,8 +374,9 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
         self.timings.eos += (t1 - t0).as_secs_f64();
         self.timings.neighbours += search;
         self.timings.setup += (t2 - t1).as_secs_f64() - search;
-        self.timings.gradients += (t3 - t2).as_secs_f64();
-        self.timings.pairs += (t4 - t3).as_secs_f64();
+        self.timings.gradients += (t3 - t2).as_secs_f64() - exchange[0];
+        self.timings.pairs += (t4 - t3).as_secs_f64() - exchange[1];
+        self.timings.exchange += exchange[0] + exchange[1];
         self.timings.derivative_evaluations += n_real as u64;
         self.timings.neighbour_entries += (0..n_real).map(|i| list.count(i) as u64).sum::<u64>();
         let mut pressure_d = std::mem::take(&mut ext.pressure);
