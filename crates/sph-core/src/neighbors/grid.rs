@@ -15,6 +15,11 @@
 //! what keeps the candidates per neighbour near a uniform lattice's on variable-resolution
 //! bodies (docs/performance.md, "The scenes users run").
 //!
+//! **Some rows only.** [`CellList::neighbors_of_rows`] gives the rows of a range as the
+//! whole search does (the others empty): it gathers the range's rows and, for the pairs
+//! only the other side finds, the particles outside whose radius reaches the range's
+//! bounding box. A rank of a run over MPI searches its own rows so.
+//!
 //! A level whose bounding box would need more than a few cells per particle (points far
 //! outside the bulk) switches from a dense `cell_start` table to a sorted list of cell
 //! keys searched by bisection, so memory stays O(N) for any point cloud.
@@ -114,7 +119,30 @@ impl<V: Vector> NeighborSearch<V> for CellList {
         positions: &[V],
         criterion: &C,
     ) -> Result<NeighborList, CoreError> {
+        self.neighbors_of_rows(positions, criterion, 0..positions.len())
+    }
+}
+
+impl CellList {
+    /// The neighbours of the particles `rows` only, the same rows as [`NeighborSearch::neighbors`]
+    /// gives them; every other row is empty. Besides the rows' own gathers, the particles
+    /// outside whose radius reaches the rows' bounding box are gathered for the pairs only
+    /// they find (|r_ij| ≥ r_i): a process that evaluates some rows (a rank of a run over
+    /// MPI) searches those and a layer around them, not every particle.
+    pub fn neighbors_of_rows<V: Vector, C: PairCriterion<V>>(
+        &mut self,
+        positions: &[V],
+        criterion: &C,
+        rows: Range<usize>,
+    ) -> Result<NeighborList, CoreError> {
         check_inputs(positions, criterion)?;
+        if rows.end > positions.len() || rows.start > rows.end {
+            return Err(CoreError::LengthMismatch {
+                what: "rows of a partial neighbour search",
+                expected: positions.len(),
+                got: rows.end,
+            });
+        }
         let n = positions.len();
         if n == 0 {
             self.stats.clear();
@@ -142,6 +170,23 @@ impl<V: Vector> NeighborSearch<V> for CellList {
             .collect::<Result<_, _>>()?;
         self.stats = levels.iter().map(Level::stats).collect();
 
+        // A partial search: the box of the rows, which a particle outside reaches when
+        // its radius does.
+        let whole = rows.start == 0 && rows.end == n;
+        let (lo, hi) = positions[rows.clone()].iter().fold(
+            (V::splat(f64::INFINITY), V::splat(f64::NEG_INFINITY)),
+            |(lo, hi), &x| (lo.component_min(x), hi.component_max(x)),
+        );
+        let reaches = |i: usize| {
+            let d2: f64 = (0..V::DIM)
+                .map(|k| {
+                    let x = positions[i].component(k);
+                    let d = (lo.component(k) - x).max(x - hi.component(k)).max(0.0);
+                    d * d
+                })
+                .sum();
+            d2 < radius[i] * radius[i]
+        };
         // Gather: each chunk of rows is searched by one task and kept as it is (no
         // concatenation into one array, which would hold the indices twice at the peak),
         // with the pairs it found for the other side only.
@@ -155,17 +200,36 @@ impl<V: Vector> NeighborSearch<V> for CellList {
                 let mut candidates = vec![0u64; levels.len()];
                 for i in range {
                     row.clear();
-                    for (level, tested) in levels.iter().zip(&mut candidates) {
-                        *tested += level.query(
-                            i,
-                            positions[i],
-                            radius[i],
-                            criterion,
-                            &mut row,
-                            &mut one_sided,
-                        );
+                    let own = rows.contains(&i);
+                    if own || (!whole && reaches(i)) {
+                        let before = one_sided.len();
+                        for (level, tested) in levels.iter().zip(&mut candidates) {
+                            *tested += level.query(
+                                i,
+                                positions[i],
+                                radius[i],
+                                criterion,
+                                &mut row,
+                                &mut one_sided,
+                            );
+                        }
+                        if !whole {
+                            // Only the rows searched for are kept.
+                            let mut k = before;
+                            for m in before..one_sided.len() {
+                                if rows.contains(&(one_sided[m].0 as usize)) {
+                                    one_sided[k] = one_sided[m];
+                                    k += 1;
+                                }
+                            }
+                            one_sided.truncate(k);
+                        }
                     }
-                    row.sort_unstable();
+                    if own {
+                        row.sort_unstable();
+                    } else {
+                        row.clear();
+                    }
                     chunk.push_row(&row);
                 }
                 Gathered {

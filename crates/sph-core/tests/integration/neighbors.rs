@@ -52,8 +52,58 @@ fn fraction() -> impl Strategy<Value = f64> {
     prop::sample::select(vec![0.125, 0.3, 0.5, 1.0, 1.7, 4.0])
 }
 
+/// The rows `start..end` of a partial search are the full search's; the others empty.
+fn partial_rows_match<V: Vector, C: sph_core::PairCriterion<V>>(
+    x: &[V],
+    crit: &C,
+    (a, b): (f64, f64),
+) -> Result<(), TestCaseError> {
+    let n = x.len();
+    let (start, end) = {
+        let (p, q) = ((a * n as f64) as usize, (b * n as f64) as usize);
+        (p.min(q).min(n), p.max(q).min(n))
+    };
+    let full = CellList::new().neighbors(x, crit).unwrap();
+    let part = CellList::new()
+        .neighbors_of_rows(x, crit, start..end)
+        .unwrap();
+    prop_assert_eq!(part.len(), n);
+    for i in 0..n {
+        let got: Vec<u32> = part.neighbors(i).collect();
+        if (start..end).contains(&i) {
+            prop_assert_eq!(got, full.neighbors(i).collect::<Vec<u32>>(), "row {}", i);
+        } else {
+            prop_assert!(got.is_empty(), "row {} outside {}..{}", i, start, end);
+        }
+    }
+    Ok(())
+}
+
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(64))]
+
+    /// A rank's search (its rows and the particles that reach them) gives its rows as
+    /// the whole search does, with radii over seven octaves.
+    #[test]
+    fn partial_rows_3d(raw in prop::collection::vec(pt(), 2..300), exps in prop::collection::vec(-7.0f64..0.0, 1..10),
+                       a in 0.0f64..1.0, b in 0.0f64..1.0) {
+        let hs: Vec<f64> = exps.iter().map(|e| 0.4 * 2f64.powf(*e)).collect();
+        let x = cloud::<DVec3>(&raw, 2, 1);
+        let h = radii(x.len(), &hs);
+        partial_rows_match(&x, &ScalarSupport::new(&h).unwrap(), (a, b))?;
+    }
+
+    #[test]
+    fn partial_rows_asph_2d(raw in prop::collection::vec(pt(), 2..200), ax in 3.0f64..30.0, angle in 0.0f64..3.2,
+                            a in 0.0f64..1.0, b in 0.0f64..1.0) {
+        let x = cloud::<DVec2>(&raw, 2, 1);
+        let rot = DMat2::from_angle(angle);
+        let h: Vec<DMat2> = (0..x.len()).map(|i| {
+            let s = 1.0 + (i % 3) as f64;
+            rot * DMat2::from_diagonal(DVec2::new(ax * s, 5.0)) * rot.transpose()
+        }).collect();
+        partial_rows_match(&x, &TensorSupport::new(&h).unwrap(), (a, b))?;
+    }
 
     #[test]
     fn scalar_1d(raw in prop::collection::vec(pt(), 1..300), hs in prop::collection::vec(0.002f64..0.2, 1..8),

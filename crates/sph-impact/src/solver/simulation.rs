@@ -31,8 +31,8 @@ use crate::solver::timestep::{TimestepVote, acceleration_vote, cfl_vote, density
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 use sph_core::{
-    CellList, Dimension, NeighborList, NeighborSearch, Particles, Permutation, ScalarSupport,
-    Tensor, TensorSupport, Vector,
+    CellList, Dimension, NeighborList, Particles, Permutation, ScalarSupport, Tensor,
+    TensorSupport, Vector,
 };
 use sph_damage::DamageForm;
 use sph_kernel::Kernel;
@@ -167,6 +167,10 @@ pub struct Simulation<D: Dimension, K: Kernel, R: PairRule<D> = NoPairRule> {
     /// The user's own pair force (`with_pair_rule`); `NoPairRule` by default.
     pair_rule: R,
     search: CellList,
+    /// On several ranks: each block of the pair passes' rows' cost (its neighbours and
+    /// rows) at the last evaluation, which shares the blocks out at the next (search
+    /// included); empty on one rank, and when the particle count has changed.
+    block_costs: Vec<u64>,
     /// The particles in free flight (`SchemeConfig::free_flight_above`).
     flight: FreeFlight<D>,
     /// The midpoint state's storage, kept from step to step and overwritten in place:
@@ -295,6 +299,7 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
             kernel,
             pair_rule: NoPairRule,
             search: CellList::new(),
+            block_costs: Vec::new(),
             flight: FreeFlight::default(),
             midpoint: State::default(),
         })
@@ -323,6 +328,7 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
             kernel: self.kernel,
             pair_rule: rule,
             search: self.search,
+            block_costs: self.block_costs,
             flight: self.flight,
             midpoint: self.midpoint,
         }

@@ -26,42 +26,28 @@ pub(super) struct Stage<D: Dimension> {
 pub(super) struct Topology<D: Dimension> {
     list: NeighborList,
     ghosts: Vec<PlacedGhost<D>>,
+    /// Each rank's blocks, whose rows the list holds (solver/ranks.rs).
+    shares: Vec<Range<usize>>,
 }
 
 impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
     /// Pass 1 (when `options` asks for it) and pass 2 with the pair kernel `pk`, their
-    /// blocks of rows shared out among `ranks` (solver/ranks.rs), each gathered by all;
-    /// the instant pass 2 began, and the seconds of the gathers after pass 1 and pass 2.
+    /// blocks of rows shared out among `ranks` as `shares` gives them (solver/ranks.rs),
+    /// each gathered by all; the instant pass 2 began, and the seconds of the gathers
+    /// after pass 1 and pass 2.
     fn pair_passes<P: PairKernel<D>>(
         &self,
         ext: &Extended<'_, D>,
         list: &NeighborList,
         pk: &P,
         options: Option<GradientOptions>,
-        rows: usize,
+        (rows, shares): (usize, &[Range<usize>]),
         ranks: &dyn Ranks,
     ) -> (Option<GradientSet<D>>, PairRates<D>, Instant, [f64; 2]) {
         let n = ext.n_real;
-        let n_blocks = n.div_ceil(rows);
         let size = ranks.size();
-        // Each block's cost: its rows' neighbours, and one per row.
-        let shares = if size == 1 {
-            std::iter::once(0..n_blocks).collect()
-        } else {
-            let costs: Vec<u64> = (0..n_blocks)
-                .map(|b| {
-                    (b * rows..((b + 1) * rows).min(n))
-                        .map(|i| list.count(i) as u64 + 1)
-                        .sum()
-                })
-                .collect();
-            ranks::shares(&costs, size)
-        };
         let mine = shares[ranks.rank()].clone();
-        let rows_of: Vec<Range<usize>> = shares
-            .iter()
-            .map(|b| (b.start * rows).min(n)..(b.end * rows).min(n))
-            .collect();
+        let rows_of: Vec<Range<usize>> = shares.iter().map(|b| block_rows_of(b, rows, n)).collect();
         let mut g = options.map(|o| gradients(ext, list, pk, o, rows, mine.clone()));
         let t = Instant::now();
         if size > 1
@@ -92,6 +78,24 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
             r.boundary = ranks::gather_list(ranks, &r.boundary);
         }
         (g, r, t3, [exchange_gradients, t.elapsed().as_secs_f64()])
+    }
+
+    /// Each of `size` ranks' blocks of the pair passes (of `rows` rows, over `n` real
+    /// particles): balanced by the blocks' costs at the last evaluation, or by their rows
+    /// when there is none (solver/ranks.rs). Every rank computes the same.
+    fn shares(&self, n: usize, rows: usize, size: usize) -> Vec<Range<usize>> {
+        let n_blocks = n.div_ceil(rows);
+        if size == 1 {
+            return std::iter::once(0..n_blocks).collect();
+        }
+        if self.block_costs.len() == n_blocks {
+            ranks::shares(&self.block_costs, size)
+        } else {
+            let rows: Vec<u64> = (0..n_blocks)
+                .map(|b| block_rows_of(&(b..b + 1), rows, n).len() as u64)
+                .collect();
+            ranks::shares(&rows, size)
+        }
     }
 
     /// Particle spacing Δx_i = (smallest support semi-axis)/n_target.
@@ -213,17 +217,56 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
                 }
             }
         }
+        let rows = self
+            .pair_block_rows
+            .unwrap_or_else(|| pair_blocks::block_rows(n_real));
+        let size = ranks.size();
         let t_search = Instant::now();
-        let list = match reuse {
-            Some(t) => t.list,
-            None if ext.h_tensor.is_empty() => self
-                .search
-                .neighbors(&ext.position, &ScalarSupport::new(&ext.h)?)?,
-            None => self
-                .search
-                .neighbors(&ext.position, &TensorSupport::new(&ext.h_tensor)?)?,
+        let (list, shares) = match reuse {
+            Some(t) => (t.list, t.shares),
+            None => {
+                let shares = self.shares(n_real, rows, size);
+                // On several ranks each searches the rows of its own blocks (and the
+                // particles that reach them), unless the summation density reads every row.
+                let mine = if size > 1 && self.scheme.density != DensityForm::Summation {
+                    block_rows_of(&shares[ranks.rank()], rows, n_real)
+                } else {
+                    0..ext.position.len()
+                };
+                let list = if ext.h_tensor.is_empty() {
+                    let support = ScalarSupport::new(&ext.h)?;
+                    self.search
+                        .neighbors_of_rows(&ext.position, &support, mine)?
+                } else {
+                    let support = TensorSupport::new(&ext.h_tensor)?;
+                    self.search
+                        .neighbors_of_rows(&ext.position, &support, mine)?
+                };
+                if size > 1 {
+                    // Every block's cost, for the next evaluation's shares.
+                    let own = shares[ranks.rank()].clone();
+                    let costs: Vec<f64> = own
+                        .map(|b| block_rows_of(&(b..b + 1), rows, n_real))
+                        .map(|r| r.map(|i| list.count(i) as u64 + 1).sum::<u64>() as f64)
+                        .collect();
+                    self.block_costs = ranks
+                        .all_gather(costs)
+                        .values
+                        .iter()
+                        .map(|&c| c as u64)
+                        .collect();
+                }
+                (list, shares)
+            }
         };
         let search = t_search.elapsed().as_secs_f64();
+        // The neighbours listed for the real particles (on several ranks from the blocks'
+        // costs, since each rank's list holds its own rows only).
+        let entries = if size > 1 {
+            self.block_costs.iter().sum::<u64>() - n_real as u64
+        } else {
+            (0..n_real).map(|i| list.count(i) as u64).sum::<u64>()
+        };
         if self.scheme.density == DensityForm::Summation {
             // Density from the positions, then the EOS again with it (real and ghosts).
             let rho = if ext.h_tensor.is_empty() {
@@ -287,19 +330,31 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
             keep_correction: self.scheme.momentum_correction,
             grad_h: self.scheme.grad_h,
         };
-        let rows = self
-            .pair_block_rows
-            .unwrap_or_else(|| pair_blocks::block_rows(ext.n_real));
+        let blocks = (rows, shares.as_slice());
         let (grads, rates_out, t3, exchange) = if ext.h_tensor.is_empty() {
             let pk = ScalarPairKernel::new(self.kernel, &ext.h, D::DIM);
-            self.pair_passes(&ext, &list, &pk, need_grads.then_some(options), rows, ranks)
+            self.pair_passes(
+                &ext,
+                &list,
+                &pk,
+                need_grads.then_some(options),
+                blocks,
+                ranks,
+            )
         } else {
             let pk = TensorPairKernel {
                 kernel: self.kernel,
                 h_tensor: &ext.h_tensor,
                 h: &ext.h,
             };
-            self.pair_passes(&ext, &list, &pk, need_grads.then_some(options), rows, ranks)
+            self.pair_passes(
+                &ext,
+                &list,
+                &pk,
+                need_grads.then_some(options),
+                blocks,
+                ranks,
+            )
         };
         let PairRates {
             each: mut rates_out,
@@ -378,12 +433,13 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
         self.timings.pairs += (t4 - t3).as_secs_f64() - exchange[1];
         self.timings.exchange += exchange[0] + exchange[1];
         self.timings.derivative_evaluations += n_real as u64;
-        self.timings.neighbour_entries += (0..n_real).map(|i| list.count(i) as u64).sum::<u64>();
+        self.timings.neighbour_entries += entries;
         let mut pressure_d = std::mem::take(&mut ext.pressure);
         pressure_d.truncate(n_real);
         let topology = keep.then(|| Topology {
             list,
             ghosts: std::mem::take(&mut ext.placed),
+            shares,
         });
         Ok((
             Stage {
@@ -470,6 +526,11 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
             })
             .collect()
     }
+}
+
+/// The rows of the blocks `blocks` (of `rows` rows each, over `n` real particles).
+fn block_rows_of(blocks: &Range<usize>, rows: usize, n: usize) -> Range<usize> {
+    (blocks.start * rows).min(n)..(blocks.end * rows).min(n)
 }
 
 /// c_L = √(c² + 4G/(3ρ)) of every particle (c itself for fluids).
