@@ -1,5 +1,5 @@
 //! `mpirun -n N sph-impact run SCENE` (the `mpi` feature; docs/mpi.md): the same run
-//! directory, to the bit, on 1, 2 and 4 ranks (4 oversubscribed on a small machine); a
+//! directory, to the bit, on 1, 2 and 4 ranks (the 3-D, 3-D quarter and RZ smoke scenes) (4 oversubscribed on a small machine); a
 //! checkpoint written on 2 ranks resumes on 1 and on 4 to the uninterrupted run; an
 //! error on a rank stops every rank with its message.
 //!
@@ -101,14 +101,41 @@ fn assert_same(a: &Path, b: &Path) {
     }
 }
 
+/// The RZ smoke scene as a 3-D quarter model (its two symmetry planes' mirror ghosts), on
+/// the four-fold symmetric rings placement, written beside the tests' outputs.
+fn quarter_scene() -> PathBuf {
+    let rz = std::fs::read_to_string(scene("smoke_rz.toml")).unwrap();
+    let lattice = "placement = { kind = \"lattice\", spacing = 0.25e-3 }";
+    let quarter = rz
+        .replacen("geometry = \"rz\"", "geometry = \"3d-quarter\"", 1)
+        .replacen(
+            lattice,
+            "placement = { kind = \"rings\", origin = [0.0, 0.0, 2.0e-3], a_res = 0.25e-3, q = 1.0 }",
+            1,
+        )
+        .replacen(
+            lattice,
+            "placement = { kind = \"rings\", origin = [0.0, 0.0, 0.0], a_res = 0.25e-3, q = 1.05 }",
+            1,
+        );
+    assert!(!quarter.contains("kind = \"lattice\"") && quarter.contains("3d-quarter"));
+    let path = Path::new(env!("CARGO_TARGET_TMPDIR")).join("mpi-smoke-quarter.toml");
+    std::fs::write(&path, quarter).unwrap();
+    path
+}
+
 #[test]
 fn the_smoke_scenes_give_the_same_bits_on_1_2_and_4_ranks() {
-    for name in ["smoke.toml", "smoke_rz.toml"] {
+    for (name, path) in [
+        ("3d", scene("smoke.toml")),
+        ("3d-quarter", quarter_scene()),
+        ("rz", scene("smoke_rz.toml")),
+    ] {
         let one = fresh(&format!("mpi-{name}-1"));
-        run(1, &scene(name), &one, &[]);
+        run(1, &path, &one, &[]);
         for ranks in [2, 4] {
             let dir = fresh(&format!("mpi-{name}-{ranks}"));
-            run(ranks, &scene(name), &dir, &[]);
+            run(ranks, &path, &dir, &[]);
             assert_same(&one, &dir);
         }
     }
