@@ -7,6 +7,8 @@
 //! `cargo test -p sph-impact --features mpi --test mpi`.
 #![cfg(feature = "mpi")]
 
+mod common;
+
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
@@ -101,26 +103,10 @@ fn assert_same(a: &Path, b: &Path) {
     }
 }
 
-/// The RZ smoke scene as a 3-D quarter model (its two symmetry planes' mirror ghosts), on
-/// the four-fold symmetric rings placement, written beside the tests' outputs.
+/// The 3-D quarter smoke scene (tests/common), written beside the tests' outputs.
 fn quarter_scene() -> PathBuf {
-    let rz = std::fs::read_to_string(scene("smoke_rz.toml")).unwrap();
-    let lattice = "placement = { kind = \"lattice\", spacing = 0.25e-3 }";
-    let quarter = rz
-        .replacen("geometry = \"rz\"", "geometry = \"3d-quarter\"", 1)
-        .replacen(
-            lattice,
-            "placement = { kind = \"rings\", origin = [0.0, 0.0, 2.0e-3], a_res = 0.25e-3, q = 1.0 }",
-            1,
-        )
-        .replacen(
-            lattice,
-            "placement = { kind = \"rings\", origin = [0.0, 0.0, 0.0], a_res = 0.25e-3, q = 1.05 }",
-            1,
-        );
-    assert!(!quarter.contains("kind = \"lattice\"") && quarter.contains("3d-quarter"));
     let path = Path::new(env!("CARGO_TARGET_TMPDIR")).join("mpi-smoke-quarter.toml");
-    std::fs::write(&path, quarter).unwrap();
+    std::fs::write(&path, common::quarter_smoke_text()).unwrap();
     path
 }
 

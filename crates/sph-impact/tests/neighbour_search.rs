@@ -11,7 +11,7 @@
 
 mod common;
 
-use common::{gap_of, scene_text, with_solver_keys};
+use common::{gap_of, quarter_smoke_text, scene_text, with_solver_keys};
 use sph_core::Dimension;
 use sph_impact::run::{RunOptions, run};
 use sph_impact::scene::{Scene, SceneSimulation};
@@ -23,26 +23,10 @@ use std::path::Path;
 /// 3-D, the two symmetry planes of the 3-D quarter, the axis in RZ, the walls of the 1-D
 /// flyer plate.
 fn cases() -> Vec<(&'static str, String)> {
-    let rz = scene_text("smoke_rz.toml");
-    // The 3-D quarter needs the four-fold symmetric rings placement.
-    let lattice = "placement = { kind = \"lattice\", spacing = 0.25e-3 }";
-    let quarter = rz
-        .replacen("geometry = \"rz\"", "geometry = \"3d-quarter\"", 1)
-        .replacen(
-            lattice,
-            "placement = { kind = \"rings\", origin = [0.0, 0.0, 2.0e-3], a_res = 0.25e-3, q = 1.0 }",
-            1,
-        )
-        .replacen(
-            lattice,
-            "placement = { kind = \"rings\", origin = [0.0, 0.0, 0.0], a_res = 0.25e-3, q = 1.05 }",
-            1,
-        );
-    assert!(!quarter.contains("kind = \"lattice\"") && quarter.contains("3d-quarter"));
     vec![
         ("3d", scene_text("smoke.toml")),
-        ("3d-quarter", quarter),
-        ("rz", rz),
+        ("3d-quarter", quarter_smoke_text()),
+        ("rz", scene_text("smoke_rz.toml")),
         ("plane", scene_text("smoke_plane.toml")),
         ("1d", scene_text("flyer_plate_1d.toml")),
     ]

@@ -4,8 +4,6 @@
 //! exchanging through shared memory as MPI ranks do through messages; the MPI transport
 //! itself is tested by tests/mpi.rs (the `mpi` feature).
 
-// The comparison of two runs by their gap is not used here: ranks must give the same bits.
-#[allow(dead_code)]
 mod common;
 
 use common::{scene_text, with_solver_keys};

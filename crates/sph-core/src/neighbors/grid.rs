@@ -173,7 +173,13 @@ impl CellList {
         // A partial search: the box of the rows, which a particle outside reaches when
         // its radius does.
         let whole = rows.start == 0 && rows.end == n;
-        let (lo, hi) = positions[rows.clone()].iter().fold(
+        // (Not needed, and not computed, when every row is searched.)
+        let boxed = if whole {
+            &positions[..0]
+        } else {
+            &positions[rows.clone()]
+        };
+        let (lo, hi) = boxed.iter().fold(
             (V::splat(f64::INFINITY), V::splat(f64::NEG_INFINITY)),
             |(lo, hi), &x| (lo.component_min(x), hi.component_max(x)),
         );

@@ -155,20 +155,19 @@ pub fn follow(scene: &Scene, options: &RunOptions, ranks: &dyn Ranks) -> Result<
 
 /// The run's worker threads: `threads`, else rayon's default.
 fn worker_pool(threads: Option<usize>) -> Result<rayon::ThreadPool, RunError> {
-    match threads {
-        Some(n) if !(1..=crate::cli::MAX_THREADS).contains(&n) => Err(RunError::Option {
-            option: "threads",
-            value: n as f64,
-            reason: "must be 1 to 1024 (sph_impact::cli::MAX_THREADS)",
-        }),
-        Some(n) => rayon::ThreadPoolBuilder::new()
-            .num_threads(n)
-            .build()
-            .map_err(|e| RunError::Diagnostics(format!("cannot start the worker threads: {e}"))),
-        None => rayon::ThreadPoolBuilder::new()
-            .build()
-            .map_err(|e| RunError::Diagnostics(format!("cannot start the worker threads: {e}"))),
+    let mut pool = rayon::ThreadPoolBuilder::new();
+    if let Some(n) = threads {
+        if !(1..=crate::cli::MAX_THREADS).contains(&n) {
+            return Err(RunError::Option {
+                option: "threads",
+                value: n as f64,
+                reason: "must be 1 to 1024 (sph_impact::cli::MAX_THREADS)",
+            });
+        }
+        pool = pool.num_threads(n);
     }
+    pool.build()
+        .map_err(|e| RunError::Diagnostics(format!("cannot start the worker threads: {e}")))
 }
 
 fn run_in_pool(

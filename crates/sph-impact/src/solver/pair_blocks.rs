@@ -23,6 +23,16 @@ pub(crate) fn block_rows(n: usize) -> usize {
     (n / 64).next_power_of_two().clamp(256, 4096)
 }
 
+/// The rows of the blocks `blocks` (of `rows` rows each, over `n` real particles; the
+/// last block may be shorter).
+pub(crate) fn rows_of(
+    blocks: &std::ops::Range<usize>,
+    rows: usize,
+    n: usize,
+) -> std::ops::Range<usize> {
+    (blocks.start * rows).min(n)..(blocks.end * rows).min(n)
+}
+
 /// How row `i` of the block `start..end` treats its neighbour `j`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(crate) enum Visit {
@@ -50,6 +60,13 @@ pub(crate) fn visit(i: usize, j: usize, start: usize, end: usize) -> Visit {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_rows_of_blocks_end_at_the_last_particle() {
+        assert_eq!(rows_of(&(0..2), 256, 700), 0..512);
+        assert_eq!(rows_of(&(2..3), 256, 700), 512..700);
+        assert_eq!(rows_of(&(3..3), 256, 700), 700..700);
+    }
 
     #[test]
     fn block_rows_depend_on_n_only_and_stay_in_range() {

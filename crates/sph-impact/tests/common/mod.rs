@@ -1,6 +1,9 @@
 //! What the tests that compare two runs of one scene share: the bundled scenes' text,
 //! extra `[solver]` keys, the field-by-field gap between two simulations, and stepping a
-//! pair of built simulations of any geometry.
+//! pair of built simulations of any geometry, and the 3-D quarter smoke scene.
+
+// Each test file uses a part of this module.
+#![allow(dead_code)]
 
 use sph_core::{Dimension, Vector};
 use sph_impact::solver::Simulation;
@@ -11,6 +14,27 @@ use std::path::PathBuf;
 pub fn scene_text(name: &str) -> String {
     let root = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../examples/scenes");
     std::fs::read_to_string(root.join(name)).unwrap()
+}
+
+/// The RZ smoke scene as a 3-D quarter model (the two symmetry planes' mirror ghosts), on
+/// the four-fold symmetric rings placement the quarter needs.
+pub fn quarter_smoke_text() -> String {
+    let rz = scene_text("smoke_rz.toml");
+    let lattice = "placement = { kind = \"lattice\", spacing = 0.25e-3 }";
+    let quarter = rz
+        .replacen("geometry = \"rz\"", "geometry = \"3d-quarter\"", 1)
+        .replacen(
+            lattice,
+            "placement = { kind = \"rings\", origin = [0.0, 0.0, 2.0e-3], a_res = 0.25e-3, q = 1.0 }",
+            1,
+        )
+        .replacen(
+            lattice,
+            "placement = { kind = \"rings\", origin = [0.0, 0.0, 0.0], a_res = 0.25e-3, q = 1.05 }",
+            1,
+        );
+    assert!(!quarter.contains("kind = \"lattice\"") && quarter.contains("3d-quarter"));
+    quarter
 }
 
 /// `text` with `keys` added to its `[solver]` table (made if it has none).

@@ -285,7 +285,7 @@ fn gradients_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
         Vec::new()
     };
     // Only the blocks `blocks` (this rank's; solver/ranks.rs): the other rows stay unset.
-    let own = (blocks.start * rows).min(n)..(blocks.end * rows).min(n);
+    let own = pair_blocks::rows_of(&blocks, rows, n);
     if keep {
         each[own.clone()]
             .par_chunks_mut(rows)

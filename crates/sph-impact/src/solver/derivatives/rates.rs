@@ -745,7 +745,7 @@ fn rates_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
         }
         boundary
     };
-    let own = (blocks.start * rows).min(n)..(blocks.end * rows).min(n);
+    let own = pair_blocks::rows_of(&blocks, rows, n);
     let boundary = if rz {
         each[own.clone()]
             .par_chunks_mut(rows)

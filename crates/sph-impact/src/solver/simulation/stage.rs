@@ -47,7 +47,10 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
         let n = ext.n_real;
         let size = ranks.size();
         let mine = shares[ranks.rank()].clone();
-        let rows_of: Vec<Range<usize>> = shares.iter().map(|b| block_rows_of(b, rows, n)).collect();
+        let rows_of: Vec<Range<usize>> = shares
+            .iter()
+            .map(|b| pair_blocks::rows_of(b, rows, n))
+            .collect();
         let mut g = options.map(|o| gradients(ext, list, pk, o, rows, mine.clone()));
         let t = Instant::now();
         if size > 1
@@ -92,7 +95,7 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
             ranks::shares(&self.block_costs, size)
         } else {
             let rows: Vec<u64> = (0..n_blocks)
-                .map(|b| block_rows_of(&(b..b + 1), rows, n).len() as u64)
+                .map(|b| pair_blocks::rows_of(&(b..b + 1), rows, n).len() as u64)
                 .collect();
             ranks::shares(&rows, size)
         }
@@ -229,7 +232,7 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
                 // On several ranks each searches the rows of its own blocks (and the
                 // particles that reach them), unless the summation density reads every row.
                 let mine = if size > 1 && self.scheme.density != DensityForm::Summation {
-                    block_rows_of(&shares[ranks.rank()], rows, n_real)
+                    pair_blocks::rows_of(&shares[ranks.rank()], rows, n_real)
                 } else {
                     0..ext.position.len()
                 };
@@ -246,7 +249,7 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
                     // Every block's cost, for the next evaluation's shares.
                     let own = shares[ranks.rank()].clone();
                     let costs: Vec<f64> = own
-                        .map(|b| block_rows_of(&(b..b + 1), rows, n_real))
+                        .map(|b| pair_blocks::rows_of(&(b..b + 1), rows, n_real))
                         .map(|r| r.map(|i| list.count(i) as u64 + 1).sum::<u64>() as f64)
                         .collect();
                     self.block_costs = ranks
@@ -330,31 +333,17 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
             keep_correction: self.scheme.momentum_correction,
             grad_h: self.scheme.grad_h,
         };
-        let blocks = (rows, shares.as_slice());
+        let (options, blocks) = (need_grads.then_some(options), (rows, shares.as_slice()));
         let (grads, rates_out, t3, exchange) = if ext.h_tensor.is_empty() {
             let pk = ScalarPairKernel::new(self.kernel, &ext.h, D::DIM);
-            self.pair_passes(
-                &ext,
-                &list,
-                &pk,
-                need_grads.then_some(options),
-                blocks,
-                ranks,
-            )
+            self.pair_passes(&ext, &list, &pk, options, blocks, ranks)
         } else {
             let pk = TensorPairKernel {
                 kernel: self.kernel,
                 h_tensor: &ext.h_tensor,
                 h: &ext.h,
             };
-            self.pair_passes(
-                &ext,
-                &list,
-                &pk,
-                need_grads.then_some(options),
-                blocks,
-                ranks,
-            )
+            self.pair_passes(&ext, &list, &pk, options, blocks, ranks)
         };
         let PairRates {
             each: mut rates_out,
@@ -526,11 +515,6 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
             })
             .collect()
     }
-}
-
-/// The rows of the blocks `blocks` (of `rows` rows each, over `n` real particles).
-fn block_rows_of(blocks: &Range<usize>, rows: usize, n: usize) -> Range<usize> {
-    (blocks.start * rows).min(n)..(blocks.end * rows).min(n)
 }
 
 /// c_L = √(c² + 4G/(3ρ)) of every particle (c itself for fluids).
