@@ -236,61 +236,12 @@ fn rates_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
         d: if damaged { ext.damage[i] } else { 0.0 },
         eta: ext.density[i] * smooth_r(i),
     };
-    // One side's share of the pair: `g` is ∇W̄ seen from that side, `force` its dv/dt,
-    // `a_force` its artificial-stress part, `vrel` its velocity less the partner's.
-    let share = |side: &Share<D>, v_star: D::Vector, pi_ij: f64, f_astress: f64| {
-        let mut part = PairPart {
-            dv: side.force,
-            ..PairPart::ZERO
-        };
-        let g = side.g;
-        if rz {
-            let vx = side.m_partner / side.eta_partner * g.component(0);
-            part.gauge_a = vx;
-            part.gauge_g = vx * side.r_partner;
-            // 1/r_i + 1/r_j = 2/r_j + (r_j − r_i)/(r_i r_j): the first part is the
-            // Cartesian pair term of R/r (zero for a uniform R on a complete
-            // lattice), the second the geometric part the hoop force cancels.
-            part.astress_hoop = side.m_partner * f_astress * (side.r_partner - side.r)
-                / (side.r * side.r_partner)
-                * g.component(0);
-        }
-        // The continuity equation uses the corrected gradient when enabled.
-        let gc = match continuity_corrections {
-            Some(c) => c[side.index].mul_vec(g),
-            None => g,
-        };
-        let dvs = (side.v - v_star).dot(gc);
-        part.drho = match scheme.density {
-            DensityForm::Volume => 2.0 * side.eta * side.m_partner / side.eta_partner * dvs,
-            DensityForm::Mass => 2.0 * side.m_partner * dvs,
-            // Summation density is recomputed from positions each stage.
-            DensityForm::Summation => 0.0,
-        };
-        // Energy: the compatible form pairs with the plain (antisymmetric) gradient
-        // of the momentum equation, which is what makes it exactly conservative.
-        part.de = match scheme.energy {
-            EnergyForm::Compatible => {
-                part.work = side.force.dot(v_star);
-                -side.force.dot(side.v - v_star)
-            }
-            EnergyForm::Study => {
-                // −2 m_j/(ρ_iρ_j) (v_i − v*)·(σ_i ∇W) with σ_i = S_i − P_i I, plus
-                // the viscous and artificial-stress heating.
-                let eta2 = side.eta * side.eta_partner;
-                let shear = if solid {
-                    -2.0 * side.m_partner * side.r / eta2 * (side.v - v_star).dot(side.s.mul_vec(g))
-                } else {
-                    0.0
-                };
-                shear
-                    + side.m_partner
-                        * (2.0 * side.r * side.p / eta2 * (side.v - v_star).dot(g)
-                            + 0.5 * pi_ij * side.vrel.dot(g))
-                    - 0.5 * side.vrel.dot(side.a_force)
-            }
-        };
-        part
+    // One side's share of the pair (`share`), with what it reads of the scheme.
+    let sharing = Sharing {
+        continuity_corrections,
+        density: scheme.density,
+        energy: scheme.energy,
+        solid,
     };
     // The pair (i, j), evaluated once: its approach speed and, unless it does not
     // interact, its shares for i and (with `both`) for j.
@@ -544,7 +495,8 @@ fn rates_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
                 ..PairEval::QUIET
             };
         }
-        let mut to_i = share(
+        let mut to_i = share::<D, RZ>(
+            &sharing,
             &Share {
                 index: i,
                 g,
@@ -566,7 +518,8 @@ fn rates_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
         );
         let mut to_j = if both {
             let mi = ext.mass[i];
-            share(
+            share::<D, RZ>(
+                &sharing,
                 &Share {
                     index: j,
                     g: -g,
@@ -765,6 +718,80 @@ fn rates_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
         boundary,
         hoop_gauge,
     }
+}
+
+/// What [`share`] reads of the scheme.
+struct Sharing<'a, D: Dimension> {
+    /// The continuity equation's gradient corrections, when on.
+    continuity_corrections: Option<&'a Vec<D::Tensor>>,
+    density: DensityForm,
+    energy: EnergyForm,
+    solid: bool,
+}
+
+/// One side's share of the pair: `g` is ∇W̄ seen from that side, `force` its dv/dt,
+/// `a_force` its artificial-stress part, `vrel` its velocity less the partner's. Always
+/// inlined into the pair loop, which calls it once or twice per pair.
+#[inline(always)]
+fn share<D: Dimension, const RZ: bool>(
+    ctx: &Sharing<'_, D>,
+    side: &Share<D>,
+    v_star: D::Vector,
+    pi_ij: f64,
+    f_astress: f64,
+) -> PairPart<D> {
+    let mut part = PairPart {
+        dv: side.force,
+        ..PairPart::ZERO
+    };
+    let g = side.g;
+    if RZ {
+        let vx = side.m_partner / side.eta_partner * g.component(0);
+        part.gauge_a = vx;
+        part.gauge_g = vx * side.r_partner;
+        // 1/r_i + 1/r_j = 2/r_j + (r_j − r_i)/(r_i r_j): the first part is the
+        // Cartesian pair term of R/r (zero for a uniform R on a complete
+        // lattice), the second the geometric part the hoop force cancels.
+        part.astress_hoop = side.m_partner * f_astress * (side.r_partner - side.r)
+            / (side.r * side.r_partner)
+            * g.component(0);
+    }
+    // The continuity equation uses the corrected gradient when enabled.
+    let gc = match ctx.continuity_corrections {
+        Some(c) => c[side.index].mul_vec(g),
+        None => g,
+    };
+    let dvs = (side.v - v_star).dot(gc);
+    part.drho = match ctx.density {
+        DensityForm::Volume => 2.0 * side.eta * side.m_partner / side.eta_partner * dvs,
+        DensityForm::Mass => 2.0 * side.m_partner * dvs,
+        // Summation density is recomputed from positions each stage.
+        DensityForm::Summation => 0.0,
+    };
+    // Energy: the compatible form pairs with the plain (antisymmetric) gradient
+    // of the momentum equation, which is what makes it exactly conservative.
+    part.de = match ctx.energy {
+        EnergyForm::Compatible => {
+            part.work = side.force.dot(v_star);
+            -side.force.dot(side.v - v_star)
+        }
+        EnergyForm::Study => {
+            // −2 m_j/(ρ_iρ_j) (v_i − v*)·(σ_i ∇W) with σ_i = S_i − P_i I, plus
+            // the viscous and artificial-stress heating.
+            let eta2 = side.eta * side.eta_partner;
+            let shear = if ctx.solid {
+                -2.0 * side.m_partner * side.r / eta2 * (side.v - v_star).dot(side.s.mul_vec(g))
+            } else {
+                0.0
+            };
+            shear
+                + side.m_partner
+                    * (2.0 * side.r * side.p / eta2 * (side.v - v_star).dot(g)
+                        + 0.5 * pi_ij * side.vrel.dot(g))
+                - 0.5 * side.vrel.dot(side.a_force)
+        }
+    };
+    part
 }
 
 /// The range the hoop gauge ŝ is kept in (axisymmetric.rs). On a uniform lattice next to
