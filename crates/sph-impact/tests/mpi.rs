@@ -1,7 +1,8 @@
 //! `mpirun -n N sph-impact run SCENE` (the `mpi` feature; docs/mpi.md): the same run
-//! directory, to the bit, on 1, 2 and 4 ranks (the 3-D, 3-D quarter and RZ smoke scenes) (4 oversubscribed on a small machine); a
-//! checkpoint written on 2 ranks resumes on 1 and on 4 to the uninterrupted run; an
-//! error on a rank stops every rank with its message.
+//! directory, to the bit, on 1, 2 and 4 ranks (4 oversubscribed on a small machine) for
+//! the 3-D, 3-D quarter and RZ smoke scenes; a checkpoint written on 2 ranks resumes on 1
+//! and on 4 to the uninterrupted run; an error on a rank stops every rank with its
+//! message.
 //!
 //! Needs an MPI (`.ci/install-mpi`):
 //! `cargo test -p sph-impact --features mpi --test mpi`.

@@ -171,18 +171,16 @@ impl CellList {
         self.stats = levels.iter().map(Level::stats).collect();
 
         // A partial search: the box of the rows, which a particle outside reaches when
-        // its radius does.
+        // its radius does (left empty when every row is searched, where it is not read).
         let whole = rows.start == 0 && rows.end == n;
-        // (Not needed, and not computed, when every row is searched.)
-        let boxed = if whole {
-            &positions[..0]
+        let empty = (V::splat(f64::INFINITY), V::splat(f64::NEG_INFINITY));
+        let (lo, hi) = if whole {
+            empty
         } else {
-            &positions[rows.clone()]
+            positions[rows.clone()].iter().fold(empty, |(lo, hi), &x| {
+                (lo.component_min(x), hi.component_max(x))
+            })
         };
-        let (lo, hi) = boxed.iter().fold(
-            (V::splat(f64::INFINITY), V::splat(f64::NEG_INFINITY)),
-            |(lo, hi), &x| (lo.component_min(x), hi.component_max(x)),
-        );
         let reaches = |i: usize| {
             let d2: f64 = (0..V::DIM)
                 .map(|k| {

@@ -238,7 +238,7 @@ fn rates_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
     };
     // One side's share of the pair (`share`), with what it reads of the scheme.
     let sharing = Sharing {
-        continuity_corrections,
+        continuity_corrections: continuity_corrections.map(Vec::as_slice),
         density: scheme.density,
         energy: scheme.energy,
         solid,
@@ -723,7 +723,7 @@ fn rates_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
 /// What [`share`] reads of the scheme.
 struct Sharing<'a, D: Dimension> {
     /// The continuity equation's gradient corrections, when on.
-    continuity_corrections: Option<&'a Vec<D::Tensor>>,
+    continuity_corrections: Option<&'a [D::Tensor]>,
     density: DensityForm,
     energy: EnergyForm,
     solid: bool,
