@@ -1,7 +1,14 @@
-# Reads the binary (base64) DataArrays of this project's .vtu snapshots into lists.
-import re, base64, struct, sys, math
+# Reads the binary (base64) DataArrays of this project's snapshots into lists: a .vtu,
+# or a .pvtu (a run over several MPI ranks) with the pieces it lists joined in order.
+import re, base64, struct, sys, math, os
 def read(path):
     s = open(path).read()
+    if path.endswith('.pvtu'):
+        out = {}
+        for source in re.findall(r'<Piece Source="([^"]+)"/>', s):
+            for name, vals in read(os.path.join(os.path.dirname(path), source)).items():
+                out.setdefault(name, []).extend(vals)
+        return out
     out = {}
     for m in re.finditer(r'<DataArray type="(\w+)" Name="(\w+)" NumberOfComponents="(\d+)" format="binary">\s*([A-Za-z0-9+/=]+)\s*</DataArray>', s):
         t, name, nc, data = m.group(1), m.group(2), int(m.group(3)), m.group(4)

@@ -2,7 +2,8 @@
 //!
 //! What a run is judged by: exact solutions for verification problems, error norms,
 //! conservation sums, impact diagnostics (ejecta, β, crater, damage, melt, fragments) and
-//! particle output for ParaView (VTU/PVD). Definitions: docs/diagnostics.md.
+//! particle output for ParaView (VTU, the parallel PVTU that joins pieces of it, and PVD).
+//! Definitions: docs/diagnostics.md.
 //!
 //! ```
 //! use sph_diagnostics::exact::{GasState, RiemannSolution};
@@ -52,6 +53,7 @@ pub mod norms;
 pub mod particles_view;
 pub mod plot;
 pub mod pvd;
+pub mod pvtu;
 pub mod vtu;
 pub mod xml;
 

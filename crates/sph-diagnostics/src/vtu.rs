@@ -24,6 +24,7 @@ use base64::engine::general_purpose::STANDARD;
 use base64::write::EncoderWriter;
 use std::fs::File;
 use std::io::{self, BufWriter, Write};
+use std::ops::Range;
 use std::path::Path;
 
 /// VTK cell type of a single point.
@@ -53,7 +54,7 @@ enum Data<'a> {
     UInt64(&'a [u64]),
 }
 
-impl Data<'_> {
+impl<'a> Data<'a> {
     fn len(&self) -> usize {
         match self {
             Data::Scalar(a) => a.len(),
@@ -62,6 +63,18 @@ impl Data<'_> {
             Data::Int(a) => a.len(),
             Data::UInt16(a) => a.len(),
             Data::UInt64(a) => a.len(),
+        }
+    }
+
+    /// The entries of `rows` (a range inside the array).
+    fn slice(&self, rows: Range<usize>) -> Data<'a> {
+        match *self {
+            Data::Scalar(a) => Data::Scalar(&a[rows]),
+            Data::Vector(a) => Data::Vector(&a[rows]),
+            Data::Tensor(a) => Data::Tensor(&a[rows]),
+            Data::Int(a) => Data::Int(&a[rows]),
+            Data::UInt16(a) => Data::UInt16(&a[rows]),
+            Data::UInt64(a) => Data::UInt64(&a[rows]),
         }
     }
 
@@ -144,6 +157,37 @@ impl<'a> VtuWriter<'a> {
         self.add(name, Data::UInt64(values))
     }
 
+    /// The same arrays restricted to the points `rows` (a piece of a parallel file,
+    /// [`crate::pvtu`]): each piece is a complete `.vtu` of its own points, and the
+    /// pieces of consecutive ranges hold, in order, the values of the whole. A range
+    /// outside the points is reported by [`write`](VtuWriter::write).
+    pub fn piece(&self, rows: Range<usize>) -> VtuWriter<'a> {
+        let mut p = VtuWriter::new(rows.len());
+        p.problem = self.problem.clone();
+        if rows.start > rows.end || rows.end > self.n_points {
+            p.note(format!(
+                "piece {}..{} lies outside the {} points",
+                rows.start, rows.end, self.n_points
+            ));
+            return p;
+        }
+        p.points = self.points.map(|x| &x[rows.clone()]);
+        p.arrays = self
+            .arrays
+            .iter()
+            .map(|(name, data)| (name.clone(), data.slice(rows.clone())))
+            .collect();
+        p
+    }
+
+    /// The point-data arrays as (name, VTK type, components), in the order added.
+    pub(crate) fn declarations(&self) -> impl Iterator<Item = (&str, &'static str, usize)> {
+        self.arrays.iter().map(|(name, data)| {
+            let (ty, components, _) = data.layout();
+            (name.as_str(), ty, components)
+        })
+    }
+
     /// Writes the file at `path` (created or truncated).
     pub fn write(&self, path: impl AsRef<Path>) -> io::Result<()> {
         self.ready()?;
@@ -156,12 +200,7 @@ impl<'a> VtuWriter<'a> {
     pub fn write_to<W: Write>(&self, w: &mut W) -> io::Result<()> {
         let points = self.ready()?;
         let n = self.n_points;
-        writeln!(w, "<?xml version=\"1.0\"?>")?;
-        writeln!(
-            w,
-            "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" \
-             byte_order=\"LittleEndian\" header_type=\"UInt64\">"
-        )?;
+        open_file(w, "UnstructuredGrid")?;
         writeln!(w, "  <UnstructuredGrid>")?;
         writeln!(
             w,
@@ -215,7 +254,7 @@ impl<'a> VtuWriter<'a> {
         self.problem.get_or_insert(problem);
     }
 
-    fn ready(&self) -> io::Result<&'a [[f64; 3]]> {
+    pub(crate) fn ready(&self) -> io::Result<&'a [[f64; 3]]> {
         if let Some(p) = &self.problem {
             return Err(io::Error::new(io::ErrorKind::InvalidInput, p.clone()));
         }
@@ -226,6 +265,17 @@ impl<'a> VtuWriter<'a> {
             )
         })
     }
+}
+
+/// The XML declaration and the opening `VTKFile` tag of a file of type `kind` (its
+/// version 1.0, with UInt64 byte counts: see the module's documentation).
+pub(crate) fn open_file<W: Write>(w: &mut W, kind: &str) -> io::Result<()> {
+    writeln!(w, "<?xml version=\"1.0\"?>")?;
+    writeln!(
+        w,
+        "<VTKFile type=\"{kind}\" version=\"1.0\" byte_order=\"LittleEndian\" \
+         header_type=\"UInt64\">"
+    )
 }
 
 fn data_array<W: Write>(w: &mut W, name: &str, data: Data) -> io::Result<()> {

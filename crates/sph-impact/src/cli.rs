@@ -418,14 +418,17 @@ pub fn run_scene_over(
 }
 
 /// `sph-impact run SCENE` on a rank other than 0 of `ranks`: steps the scene in lockstep
-/// with rank 0 ([`crate::run::follow`]), which writes the run directory and prints.
+/// with rank 0 ([`crate::run::follow`]), which writes the run directory and prints; this
+/// rank writes its pieces of the snapshots there.
 pub fn follow_scene(
     scene_path: &Path,
+    out: Option<&Path>,
     options: &crate::run::RunOptions,
     ranks: &dyn crate::solver::Ranks,
 ) -> Result<(), CommandError> {
     let scene = crate::scene::Scene::from_toml_file(scene_path).map_err(CommandError::bad_input)?;
-    crate::run::follow(&scene, options, ranks).map_err(run_error)
+    let dir = run_directory(scene_path, &scene, out);
+    crate::run::follow(&scene, &dir, options, ranks).map_err(run_error)
 }
 
 /// The result lines `sph-impact run` prints: the run directory, crater, β and cost.

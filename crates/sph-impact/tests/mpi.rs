@@ -1,8 +1,9 @@
-//! `mpirun -n N sph-impact run SCENE` (the `mpi` feature; docs/mpi.md): the same run
-//! directory, to the bit, on 1, 2 and 4 ranks (4 oversubscribed on a small machine) for
-//! the 3-D, 3-D quarter and RZ smoke scenes; a checkpoint written on 2 ranks resumes on 1
-//! and on 4 to the uninterrupted run; an error on a rank stops every rank with its
-//! message.
+//! `mpirun -n N sph-impact run SCENE` (the `mpi` feature; docs/mpi.md): the same results,
+//! to the bit, on 1, 2 and 4 ranks (4 oversubscribed on a small machine) for the 3-D,
+//! 3-D quarter and RZ smoke scenes (history, summary, and every snapshot's arrays: one
+//! `.vtu` on one rank, a `.pvtu` of a piece per rank on several); a checkpoint written on
+//! 2 ranks resumes on 1 and on 4 to the uninterrupted run; an error on a rank stops every
+//! rank with its message.
 //!
 //! Needs an MPI (`.ci/install-mpi`):
 //! `cargo test -p sph-impact --features mpi --test mpi`.
@@ -10,6 +11,8 @@
 
 mod common;
 
+use base64::Engine;
+use base64::engine::general_purpose::STANDARD;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
@@ -57,20 +60,102 @@ fn run(ranks: usize, scene: &Path, dir: &Path, extra: &[&str]) {
     );
 }
 
-/// The run directory's files that hold results: the snapshots, history.csv, run.pvd, and
-/// summary.json without the wall times and the ranks' gather time.
+/// The point-data arrays and the points of a `.vtu` file, (name, decoded values), in
+/// the file's order (the cells, which number a piece's own points, left out).
+fn vtu_arrays(path: &Path) -> Vec<(String, Vec<u8>)> {
+    let xml = std::fs::read_to_string(path).unwrap();
+    let mut arrays = vec![];
+    for part in xml.split("<DataArray ").skip(1) {
+        let name = part
+            .split("Name=\"")
+            .nth(1)
+            .unwrap()
+            .split('"')
+            .next()
+            .unwrap();
+        if matches!(name, "connectivity" | "offsets" | "types") {
+            continue;
+        }
+        let body = &part[part.find('>').unwrap() + 1..part.find("</DataArray>").unwrap()];
+        let bytes = STANDARD.decode(body.trim()).unwrap();
+        arrays.push((name.to_string(), bytes[8..].to_vec()));
+    }
+    arrays
+}
+
+/// The pieces a `.pvtu` lists (file names relative to it).
+fn pieces(pvtu: &Path) -> Vec<String> {
+    std::fs::read_to_string(pvtu)
+        .unwrap()
+        .split("Source=\"")
+        .skip(1)
+        .map(|s| s.split('"').next().unwrap().to_string())
+        .collect()
+}
+
+/// A snapshot's arrays: those of its `.vtu`, or those of the pieces its `.pvtu` lists
+/// joined in order (checking that the `.pvtu` declares the arrays they hold).
+fn snapshot_arrays(path: &Path) -> Vec<(String, Vec<u8>)> {
+    if path.extension().unwrap() == "vtu" {
+        return vtu_arrays(path);
+    }
+    let mut joined: Vec<(String, Vec<u8>)> = vec![];
+    for source in pieces(path) {
+        let piece = vtu_arrays(&path.parent().unwrap().join(source));
+        if joined.is_empty() {
+            joined = piece;
+        } else {
+            for ((name, all), (other, values)) in joined.iter_mut().zip(piece) {
+                assert_eq!(*name, other);
+                all.extend(values);
+            }
+        }
+    }
+    let xml = std::fs::read_to_string(path).unwrap();
+    for (name, _) in &joined {
+        if name != "Points" {
+            assert!(xml.contains(&format!("Name=\"{name}\"")), "{name}");
+        }
+    }
+    joined
+}
+
+/// The snapshots run.pvd lists, (time as written, file relative to `dir`).
+fn snapshots(dir: &Path) -> Vec<(String, String)> {
+    let pvd = std::fs::read_to_string(dir.join("run.pvd")).unwrap();
+    pvd.split("<DataSet ")
+        .skip(1)
+        .map(|entry| {
+            let attr = |key: &str| entry.split(key).nth(1).unwrap().split('"').next().unwrap();
+            (attr("timestep=\"").to_string(), attr("file=\"").to_string())
+        })
+        .collect()
+}
+
+/// How many pieces each snapshot of `dir` has (1 for a `.vtu`).
+fn piece_counts(dir: &Path) -> Vec<usize> {
+    snapshots(dir)
+        .iter()
+        .map(|(_, file)| match file.strip_suffix(".pvtu") {
+            Some(_) => pieces(&dir.join(file)).len(),
+            None => 1,
+        })
+        .collect()
+}
+
+/// What a run directory holds as results: each snapshot's time and arrays, history.csv,
+/// and summary.json without the wall times and the ranks' gather time.
 fn results(dir: &Path) -> Vec<(String, Vec<u8>)> {
     let mut files = vec![];
-    let mut names: Vec<PathBuf> = std::fs::read_dir(dir.join("snapshots"))
-        .unwrap()
-        .map(|e| e.unwrap().path())
-        .collect();
-    names.sort();
-    names.push(dir.join("history.csv"));
-    names.push(dir.join("run.pvd"));
-    for p in names {
-        files.push((p.display().to_string(), std::fs::read(&p).unwrap()));
+    for (time, file) in snapshots(dir) {
+        for (name, values) in snapshot_arrays(&dir.join(file)) {
+            files.push((format!("t = {time} s: {name}"), values));
+        }
     }
+    files.push((
+        "history.csv".into(),
+        std::fs::read(dir.join("history.csv")).unwrap(),
+    ));
     let mut summary: serde_json::Value =
         serde_json::from_slice(&std::fs::read(dir.join("summary.json")).unwrap()).unwrap();
     for key in [
@@ -83,17 +168,20 @@ fn results(dir: &Path) -> Vec<(String, Vec<u8>)> {
     }
     files.push(("summary.json".into(), summary.to_string().into_bytes()));
     files
-        .into_iter()
-        .map(|(name, bytes)| {
-            let short = name.rsplit('/').take(2).collect::<Vec<_>>().join("<");
-            (short, bytes)
-        })
-        .collect()
 }
 
+/// The results of the runs in `a` and `b` are the same bits, and `b`'s snapshots directory
+/// holds nothing that its run.pvd does not list (directly or as a piece).
 fn assert_same(a: &Path, b: &Path) {
     let (ra, rb) = (results(a), results(b));
-    assert_eq!(ra.len(), rb.len(), "{} and {}", a.display(), b.display());
+    let names = |r: &[(String, Vec<u8>)]| r.iter().map(|x| x.0.clone()).collect::<Vec<_>>();
+    assert_eq!(
+        names(&ra),
+        names(&rb),
+        "{} and {}",
+        a.display(),
+        b.display()
+    );
     for ((name, x), (_, y)) in ra.iter().zip(&rb) {
         assert!(
             x == y,
@@ -102,6 +190,21 @@ fn assert_same(a: &Path, b: &Path) {
             b.display()
         );
     }
+    let mut listed = vec![];
+    for (_, file) in snapshots(b) {
+        let file = file.strip_prefix("snapshots/").unwrap().to_string();
+        if file.ends_with(".pvtu") {
+            listed.extend(pieces(&b.join("snapshots").join(&file)));
+        }
+        listed.push(file);
+    }
+    listed.sort();
+    let mut held: Vec<String> = std::fs::read_dir(b.join("snapshots"))
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    held.sort();
+    assert_eq!(held, listed, "{}", b.display());
 }
 
 /// The 3-D quarter smoke scene (tests/common), written beside the tests' outputs.
@@ -124,6 +227,11 @@ fn the_smoke_scenes_give_the_same_bits_on_1_2_and_4_ranks() {
             let dir = fresh(&format!("mpi-{name}-{ranks}"));
             run(ranks, &path, &dir, &[]);
             assert_same(&one, &dir);
+            // One .vtu per snapshot on one rank; a .pvtu of a piece per rank on several.
+            let n = piece_counts(&one).len();
+            assert!(n > 1 && piece_counts(&one) == vec![1; n]);
+            assert!(snapshots(&one).iter().all(|(_, f)| f.ends_with(".vtu")));
+            assert_eq!(piece_counts(&dir), vec![ranks; n]);
         }
     }
 }
@@ -144,6 +252,10 @@ fn a_checkpoint_written_on_2_ranks_resumes_on_1_and_on_4() {
         assert!(copy.success());
         run(ranks, &s, &dir, &["--resume", "--end-time", "1e-6"]);
         assert_same(&whole, &dir);
+        // The snapshots before the checkpoint in two pieces, the later ones as written
+        // on `ranks`.
+        let counts = piece_counts(&dir);
+        assert_eq!((counts[0], *counts.last().unwrap()), (2, ranks));
     }
 }
 

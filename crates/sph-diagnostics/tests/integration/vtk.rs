@@ -4,6 +4,7 @@
 use base64::Engine;
 use base64::engine::general_purpose::STANDARD;
 use proptest::prelude::*;
+use sph_diagnostics::pvtu::{write_pvtu, write_pvtu_to};
 use sph_diagnostics::{Pvd, VtuWriter};
 use std::path::PathBuf;
 
@@ -186,6 +187,105 @@ fn pvd_lists_the_snapshots() {
     bad.push(f64::NAN, "x.vtu");
     assert!(bad.write_to(&mut Vec::new()).is_err());
     std::fs::remove_dir_all(dir).unwrap();
+}
+
+#[test]
+fn pieces_hold_the_whole_in_order_and_the_pvtu_declares_and_lists_them() {
+    let n = 7;
+    let x: Vec<[f64; 3]> = (0..n).map(|i| [i as f64, -(i as f64), 0.5]).collect();
+    let rho: Vec<f64> = (0..n).map(|i| 2700.0 + i as f64).collect();
+    let s: Vec<[f64; 9]> = (0..n).map(|i| [i as f64; 9]).collect();
+    let body: Vec<u16> = (0..n as u16).collect();
+    let mut w = VtuWriter::new(n);
+    w.points(&x)
+        .scalar("density", &rho)
+        .tensor("stress", &s)
+        .uint16("material", &body);
+    let mut whole = Vec::new();
+    w.write_to(&mut whole).unwrap();
+    let whole = String::from_utf8(whole).unwrap();
+    // Three pieces, one of them empty: their arrays joined are the whole's.
+    let cuts = [0..3, 3..3, 3..7];
+    let dir = scratch("pvtu");
+    let mut joined: Vec<Vec<u8>> = vec![Vec::new(); 4];
+    for (k, rows) in cuts.iter().enumerate() {
+        let piece = w.piece(rows.clone());
+        piece.write(dir.join(format!("p_{k}.vtu"))).unwrap();
+        let xml = std::fs::read_to_string(dir.join(format!("p_{k}.vtu"))).unwrap();
+        check_structure(&xml);
+        let m = rows.len();
+        assert!(xml.contains(&format!("NumberOfPoints=\"{m}\" NumberOfCells=\"{m}\"")));
+        for (j, name) in ["Points", "density", "stress", "material"]
+            .iter()
+            .enumerate()
+        {
+            joined[j].extend(array(&xml, name).1);
+        }
+    }
+    for (j, name) in ["Points", "density", "stress", "material"]
+        .iter()
+        .enumerate()
+    {
+        assert_eq!(joined[j], array(&whole, name).1, "{name}");
+    }
+    let sources = ["p_0.vtu", "p_1.vtu", "p_2.vtu"];
+    write_pvtu(dir.join("all.pvtu"), &w, &sources).unwrap();
+    let xml = std::fs::read_to_string(dir.join("all.pvtu")).unwrap();
+    assert_eq!(
+        check_structure(&xml),
+        [
+            "VTKFile",
+            "PUnstructuredGrid",
+            "PPointData",
+            "PDataArray",
+            "PDataArray",
+            "PDataArray",
+            "PPoints",
+            "PDataArray",
+            "Piece",
+            "Piece",
+            "Piece"
+        ]
+    );
+    assert!(xml.contains("type=\"PUnstructuredGrid\""));
+    assert!(
+        xml.contains("<PDataArray type=\"Float64\" Name=\"stress\" NumberOfComponents=\"9\"/>")
+    );
+    assert!(
+        xml.contains("<PDataArray type=\"UInt16\" Name=\"material\" NumberOfComponents=\"1\"/>")
+    );
+    let listed: Vec<&str> = xml
+        .split("Source=\"")
+        .skip(1)
+        .map(|s| &s[..s.find('"').unwrap()])
+        .collect();
+    assert_eq!(listed, sources);
+    // A piece's writer declares the same arrays as the whole's.
+    let mut from_piece = Vec::new();
+    write_pvtu_to(&mut from_piece, &w.piece(3..3), &sources).unwrap();
+    assert_eq!(String::from_utf8(from_piece).unwrap(), xml);
+    std::fs::remove_dir_all(dir).unwrap();
+}
+
+#[test]
+fn piece_and_pvtu_mistakes_are_invalid_input() {
+    let x = [[0.0; 3]; 3];
+    let rho = [1.0; 3];
+    let mut w = VtuWriter::new(3);
+    w.points(&x).scalar("density", &rho);
+    let err = w.piece(2..4).write_to(&mut Vec::new()).unwrap_err();
+    assert_eq!(err.kind(), std::io::ErrorKind::InvalidInput);
+    assert!(err.to_string().contains("2..4"), "{err}");
+    let none: [&str; 0] = [];
+    let err = write_pvtu_to(&mut Vec::new(), &w, &none).unwrap_err();
+    assert_eq!(err.kind(), std::io::ErrorKind::InvalidInput);
+    assert!(write_pvtu_to(&mut Vec::new(), &w, &["a.vtu", ""]).is_err());
+    // The whole's own mistake is the piece's and the pvtu's.
+    let short = [1.0];
+    let mut bad = VtuWriter::new(3);
+    bad.points(&x).scalar("density", &short);
+    assert!(bad.piece(0..1).write_to(&mut Vec::new()).is_err());
+    assert!(write_pvtu_to(&mut Vec::new(), &bad, &["a.vtu"]).is_err());
 }
 
 proptest! {

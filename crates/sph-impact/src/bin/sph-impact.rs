@@ -238,7 +238,7 @@ fn command(cli: Cli, ranks: &dyn Ranks) -> Result<(), CommandError> {
             if ranks.rank() == 0 {
                 sph_impact::cli::run_scene_over(&scene, out.as_deref(), &options, ranks).map(|_| ())
             } else {
-                sph_impact::cli::follow_scene(&scene, &options, ranks)
+                sph_impact::cli::follow_scene(&scene, out.as_deref(), &options, ranks)
             }
         }
         Command::Check {

@@ -32,7 +32,7 @@ fn is_run_file(name: &str) -> bool {
 /// True for a file a run writes into one of [`RUN_SUBDIRS`].
 fn is_series_file(name: &str) -> bool {
     let base = name.strip_suffix(".part").unwrap_or(name);
-    base.ends_with(".vtu") || base.ends_with(".cbor")
+    base.ends_with(".vtu") || base.ends_with(".pvtu") || base.ends_with(".cbor")
 }
 
 /// The previous run's files in `dir` (names relative to it, sorted); empty for a
@@ -115,10 +115,23 @@ mod tests {
         prepare_fresh(&dir, false).unwrap();
         std::fs::write(dir.join("history.csv"), "t_s\n").unwrap();
         std::fs::write(dir.join("snapshots/00000.vtu"), "x").unwrap();
+        // A snapshot of a run over two MPI ranks: the .pvtu and its pieces.
+        for name in ["00001.pvtu", "00001_0.vtu", "00001_1.vtu"] {
+            std::fs::write(dir.join("snapshots").join(name), "x").unwrap();
+        }
         std::fs::write(dir.join("summary.json.part"), "x").unwrap();
+        let mut found = previous_run_files(&dir).unwrap();
+        found.sort();
         assert_eq!(
-            previous_run_files(&dir).unwrap(),
-            ["history.csv", "snapshots/00000.vtu", "summary.json.part"]
+            found,
+            [
+                "history.csv",
+                "snapshots/00000.vtu",
+                "snapshots/00001.pvtu",
+                "snapshots/00001_0.vtu",
+                "snapshots/00001_1.vtu",
+                "summary.json.part"
+            ]
         );
         let e = prepare_fresh(&dir, false).unwrap_err();
         assert!(e.is_bad_input(), "{e}");

@@ -73,8 +73,10 @@ struct Outputs {
 }
 
 impl Outputs {
-    /// Writes the next snapshot of `sim`, measures the crater on it and adds a history
-    /// row after the step `step` (`None` at t = 0).
+    /// Writes the next snapshot of `sim` (with the other ranks' pieces: they are told
+    /// to write them, and whether it is the end's), measures the crater on it and adds a
+    /// history row after the step `step` (`None` at t = 0).
+    #[allow(clippy::too_many_arguments)]
     fn take<D: SceneDimension>(
         &mut self,
         sim: &SimOf<D>,
@@ -83,10 +85,18 @@ impl Outputs {
         measurer: &Measurer,
         history: &mut History,
         step: Option<&StepInfo>,
+        ranks: &dyn Ranks,
+        end: bool,
     ) -> Result<(), RunError> {
         let a = Arrays::of::<D>(sim, copies);
-        let (pressure, _) = sim.pressure_and_sound_speed();
-        snapshot::write_snapshot::<D>(sim, &a, &pressure, dir, self.index, &mut self.pvd)?;
+        lockstep::tell(
+            ranks,
+            Command::Snapshot {
+                index: self.index,
+                end,
+            },
+        );
+        snapshot::write_snapshot::<D>(sim, &a, dir, self.index, &mut self.pvd, ranks)?;
         self.index += 1;
         if let Some(c) = measurer.crater(&a)? {
             self.crater = CraterReading {
@@ -213,7 +223,17 @@ impl Job<'_> {
             (history, next_snapshot)
         } else {
             let mut history = History::create(&history_path)?;
-            outputs.take::<D>(&sim, copies, dir, &measurer, &mut history, None)?;
+            let ranks = self.ranks;
+            outputs.take::<D>(
+                &sim,
+                copies,
+                dir,
+                &measurer,
+                &mut history,
+                None,
+                ranks,
+                false,
+            )?;
             (history, interval.min(end_time))
         };
         let t_step = Instant::now();
@@ -250,8 +270,10 @@ impl Job<'_> {
                 sim.end_free_flight();
             }
             if at_snapshot || at_end {
+                let ranks = self.ranks;
                 sim.with_free_flight(|sim| {
-                    outputs.take::<D>(sim, copies, dir, &measurer, &mut history, Some(&info))
+                    let (m, h) = (&measurer, &mut history);
+                    outputs.take::<D>(sim, copies, dir, m, h, Some(&info), ranks, at_end)
                 })?;
                 while next_snapshot <= sim.state.time + tol {
                     next_snapshot += interval;
@@ -408,8 +430,7 @@ fn discard_after(dir: &Path, steps: u64, snapshot_index: usize) -> Result<(), Ru
     if let Ok(entries) = std::fs::read_dir(dir.join("snapshots")) {
         for e in entries.filter_map(|e| e.ok()) {
             let name = e.file_name().to_string_lossy().into_owned();
-            let index = name.split('.').next().and_then(|n| n.parse::<usize>().ok());
-            if index.is_some_and(|k| k >= snapshot_index) {
+            if snapshot::snapshot_number(&name).is_some_and(|k| k >= snapshot_index) {
                 remove(&e.path())?;
             }
         }

@@ -4,7 +4,8 @@
 //! writes into the run directory (docs/scenes.md, "Outputs"):
 //!
 //! - `snapshots/NNNNN.vtu` every snapshot interval (and at t = 0 and the end), listed
-//!   with their times in `run.pvd` for ParaView;
+//!   with their times in `run.pvd` for ParaView (over several MPI ranks a piece per rank,
+//!   `NNNNN_K.vtu`, joined by `NNNNN.pvtu`: run/snapshot.rs);
 //! - `history.csv`: time, step, β, crater size, energies and axial momentum
 //!   ([`HISTORY_COLUMNS`]); β every row, the crater at every snapshot (rows in between
 //!   carry the last value);
@@ -136,19 +137,32 @@ pub fn run_over(
     pool.install(|| run_in_pool(scene, out_dir, options, end_time, threads, ranks))
 }
 
-/// A rank other than 0 of a run over `ranks` ([`run_over`]): builds `scene` as rank 0
-/// does and steps it in lockstep with rank 0 until the run ends; writes nothing.
-pub fn follow(scene: &Scene, options: &RunOptions, ranks: &dyn Ranks) -> Result<(), RunError> {
+/// A rank other than 0 of a run over `ranks` ([`run_over`]) into `out_dir`: builds
+/// `scene` as rank 0 does and steps it in lockstep with rank 0 until the run ends;
+/// writes only its pieces of the snapshots (`snapshots/NNNNN_K.vtu`, K its rank).
+pub fn follow(
+    scene: &Scene,
+    out_dir: &Path,
+    options: &RunOptions,
+    ranks: &dyn Ranks,
+) -> Result<(), RunError> {
     let end_time = options.end_time.unwrap_or(scene.end_time);
+    let (dir, copies, resume) = (out_dir, scene.symmetry_copies(), options.resume);
     let pool = worker_pool(options.threads)?;
     pool.install(|| {
         let preflight = scene.preflight(options.resolution_scale, Some(end_time))?;
         let Built { simulation, .. } = scene.build_placed(&preflight.placed)?;
         match simulation {
-            SceneSimulation::ThreeD(sim) => lockstep::follow::<In3d>(ranks, sim, options.resume),
-            SceneSimulation::Rz(sim) => lockstep::follow::<InRz>(ranks, sim, options.resume),
-            SceneSimulation::Plane(sim) => lockstep::follow::<InPlane>(ranks, sim, options.resume),
-            SceneSimulation::Line(sim) => lockstep::follow::<InLine>(ranks, sim, options.resume),
+            SceneSimulation::ThreeD(sim) => {
+                lockstep::follow::<In3d>(ranks, sim, resume, dir, copies)
+            }
+            SceneSimulation::Rz(sim) => lockstep::follow::<InRz>(ranks, sim, resume, dir, copies),
+            SceneSimulation::Plane(sim) => {
+                lockstep::follow::<InPlane>(ranks, sim, resume, dir, copies)
+            }
+            SceneSimulation::Line(sim) => {
+                lockstep::follow::<InLine>(ranks, sim, resume, dir, copies)
+            }
         }
     })
 }
