@@ -13,6 +13,8 @@
 //! cargo bench -p sph-benches --bench scenes -- 3d --quick   # 3-D at A_res 2 mm, 2 steps
 //! cargo bench -p sph-benches --bench scenes -- 3d --search  # ten searches, no steps
 //! cargo bench -p sph-benches --bench scenes -- rz --each-step # one search per RK2 step
+//! cargo bench -p sph-benches --bench scenes -- 3d --halo    # domains' ghost layers, no steps
+//! cargo bench -p sph-benches --bench scenes -- 3d --halo --study-resolution # at A_res 0.5 mm
 //! ```
 //!
 //! `--each-step` sets `[solver] neighbour_search = "each-step"` over the scene's own
@@ -244,11 +246,90 @@ fn search_only(case: &Case) {
     }
 }
 
+/// Builds the case's scene and, on its initial particles, measures what a decomposition
+/// into N domains of contiguous Morton-ordered rows (balanced by neighbour count, as the
+/// ranks share the pair blocks; docs/mpi.md) would hold as ghost layers: for each domain
+/// its halo, the particles of other domains that a row of its own lists as a neighbour.
+/// Prints, for N = 2 … 1024, the mean and largest halo against the domain's own rows, the
+/// largest domain against n/N and the largest (own + halo) against n/N.
+fn halo_sizes<D: sph_core::Dimension>(sim: &Simulation<D, KernelChoice>) {
+    let p = &sim.state.particles;
+    let support = ScalarSupport::new(&p.smoothing_length).expect("radii");
+    let list = CellList::new()
+        .neighbors(&p.position, &support)
+        .expect("search");
+    let n = p.len();
+    // A row's cost is its pair count (and one for the row itself).
+    let cost: Vec<usize> = (0..n).map(|i| list.count(i) + 1).collect();
+    let total: usize = cost.iter().sum();
+    println!(
+        "{n} particles, {:.1} neighbours per particle; domains of contiguous rows:",
+        list.mean_count()
+    );
+    println!(
+        "  domains | halo / own, mean | halo / own, largest | largest own × N/n | largest (own + halo) × N/n"
+    );
+    for domains in [2usize, 4, 8, 16, 32, 64, 128, 256, 512, 1024] {
+        // The midpoint of a row's cost decides its domain (solver/ranks.rs, `shares`).
+        let mut owner = Vec::with_capacity(n);
+        let mut before = 0;
+        for &c in &cost {
+            owner.push(((2 * before + c) * domains / (2 * total)).min(domains - 1));
+            before += c;
+        }
+        let mut own = vec![0usize; domains];
+        let mut halo = vec![0usize; domains];
+        // The domain that last counted particle j (rows of a domain are contiguous).
+        let mut counted = vec![usize::MAX; n];
+        for i in 0..n {
+            let d = owner[i];
+            own[d] += 1;
+            for j in list.neighbors(i) {
+                let j = j as usize;
+                if owner[j] != d && counted[j] != d {
+                    counted[j] = d;
+                    halo[d] += 1;
+                }
+            }
+        }
+        let ratio: Vec<f64> = (0..domains)
+            .map(|d| halo[d] as f64 / own[d].max(1) as f64)
+            .collect();
+        let per = n as f64 / domains as f64;
+        println!(
+            "  {domains} | {:.3} | {:.3} | {:.2} | {:.2}",
+            ratio.iter().sum::<f64>() / domains as f64,
+            ratio.iter().cloned().fold(0.0, f64::max),
+            *own.iter().max().unwrap() as f64 / per,
+            (0..domains).map(|d| own[d] + halo[d]).max().unwrap() as f64 / per
+        );
+    }
+}
+
+/// [`halo_sizes`] on the case's initial particles.
+fn halo_only(case: &Case) {
+    println!(
+        "\n{} scene ({}, --resolution-scale {}):",
+        case.label, case.file, case.resolution_scale
+    );
+    let built = scene_of(case)
+        .build_scaled(case.resolution_scale)
+        .expect("build");
+    match built.simulation {
+        SceneSimulation::ThreeD(sim) => halo_sizes(&sim),
+        SceneSimulation::Rz(sim) | SceneSimulation::Plane(sim) => halo_sizes(&sim),
+        SceneSimulation::Line(sim) => halo_sizes(&sim),
+    }
+}
+
 fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();
+    let halo = args.iter().any(|a| a == "--halo");
     let quick = args.iter().any(|a| a == "--quick");
     let search = args.iter().any(|a| a == "--search");
     let each_step = args.iter().any(|a| a == "--each-step");
+    // The 3-D scene at the study's own A_res 0.5 mm (1.0 M particles).
+    let study = args.iter().any(|a| a == "--study-resolution");
     let want = |name: &str| {
         let picked: Vec<&String> = args.iter().filter(|a| *a == "3d" || *a == "rz").collect();
         picked.is_empty() || picked.iter().any(|a| *a == name)
@@ -259,7 +340,11 @@ fn main() {
             Case {
                 label: "3-D",
                 file: "basalt_3.9kms.toml",
-                resolution_scale: if quick { 0.25 } else { 0.5 },
+                resolution_scale: match (quick, study) {
+                    (_, true) => 1.0,
+                    (true, false) => 0.25,
+                    (false, false) => 0.5,
+                },
                 warm_up: if quick { 1 } else { 2 },
                 steps: if quick { 2 } else { 4 },
                 each_step,
@@ -281,6 +366,8 @@ fn main() {
         if want(name) {
             if search {
                 search_only(case);
+            } else if halo {
+                halo_only(case);
             } else {
                 run_case(case);
             }
