@@ -1,6 +1,7 @@
 //! `mpirun -n N sph-impact run SCENE` (the `mpi` feature; docs/mpi.md): the same results,
 //! to the bit, on 1, 2 and 4 ranks (4 oversubscribed on a small machine) for the 3-D,
-//! 3-D quarter and RZ smoke scenes (history, summary, and every snapshot's arrays: one
+//! 3-D quarter and RZ smoke scenes, the last also with free flight and the summation
+//! density (history, summary, and every snapshot's arrays: one
 //! `.vtu` on one rank, a `.pvtu` of a piece per rank on several); a checkpoint written on
 //! 2 ranks resumes on 1 and on 4 to the uninterrupted run; an error on a rank stops every
 //! rank with its message.
@@ -214,12 +215,30 @@ fn quarter_scene() -> PathBuf {
     path
 }
 
+/// The RZ smoke scene with free flight above the target's surface and the summation
+/// density: ten rings are in flight at the end, so the snapshots' pieces are written with
+/// the particles in flight joined, and the last after the density is synchronised and
+/// free flight ended, on every rank.
+fn free_flight_scene() -> PathBuf {
+    let text = std::fs::read_to_string(scene("smoke_rz.toml")).unwrap();
+    let solver = "[solver]\n";
+    assert!(text.contains(solver));
+    let text = text.replace(
+        solver,
+        "[solver]\nfree_flight_above = 0.0\ndensity = \"summation\"\n",
+    );
+    let path = Path::new(env!("CARGO_TARGET_TMPDIR")).join("mpi-smoke-rz-flight.toml");
+    std::fs::write(&path, text).unwrap();
+    path
+}
+
 #[test]
 fn the_smoke_scenes_give_the_same_bits_on_1_2_and_4_ranks() {
     for (name, path) in [
         ("3d", scene("smoke.toml")),
         ("3d-quarter", quarter_scene()),
         ("rz", scene("smoke_rz.toml")),
+        ("rz-flight", free_flight_scene()),
     ] {
         let one = fresh(&format!("mpi-{name}-1"));
         run(1, &path, &one, &[]);
@@ -232,6 +251,12 @@ fn the_smoke_scenes_give_the_same_bits_on_1_2_and_4_ranks() {
             assert!(n > 1 && piece_counts(&one) == vec![1; n]);
             assert!(snapshots(&one).iter().all(|(_, f)| f.ends_with(".vtu")));
             assert_eq!(piece_counts(&dir), vec![ranks; n]);
+            if name == "rz-flight" {
+                let summary: serde_json::Value =
+                    serde_json::from_slice(&std::fs::read(one.join("summary.json")).unwrap())
+                        .unwrap();
+                assert!(summary["free_flight_particles"].as_u64().unwrap() > 0);
+            }
         }
     }
 }
