@@ -289,7 +289,7 @@ pub(crate) fn write_whole(path: &Path, bytes: &[u8]) -> Result<(), StudyError> {
 }
 
 /// The study's progress on standard error: a bar over its points (ended of those to run,
-/// failed, running, the time left from the mean wall time of the points ended so far). On
+/// failed, running, the time left from the time per point finished so far). On
 /// a terminal the bar is redrawn in place and a failed point's error is printed above it;
 /// to a file (a log) each point's start and end is a line with the bar.
 struct Progress {
@@ -320,11 +320,14 @@ impl Progress {
         }
     }
 
-    /// The bar and its counts.
+    /// The bar and its counts. The time left is estimated from the points that finished:
+    /// a point that failed early says nothing of how long the others take, so until one
+    /// has finished the estimate is "?".
     fn line(&self, (ended, failed, running): (usize, usize, usize)) -> String {
-        let left = if ended > 0 {
+        let done = ended - failed;
+        let left = if done > 0 {
             let elapsed = self.start.elapsed().as_secs_f64();
-            let left = (elapsed / ended as f64) * (self.to_run - ended) as f64;
+            let left = (elapsed / done as f64) * (self.to_run - ended) as f64;
             crate::scene::estimate_human_seconds(left)
         } else {
             "?".into()
@@ -425,5 +428,7 @@ mod tests {
             p.line((8, 1, 0))
                 .contains("[########################] 8 of 8")
         );
+        // Only failed points ended: no estimate from them.
+        assert!(p.line((3, 3, 2)).ends_with("2 running, about ? left"));
     }
 }
