@@ -7,14 +7,14 @@
 # Usage: python3 axis_field_sources.py RUN_DIR SNAPSHOT.vtu ZLO_M ZHI_M [H_M]
 import sys, math, os
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from vtu_read import read
+from vtu_read import read, snapshots
 from crater_axis_depth import w3
 
 
 def main():
     run, snap, z1, z2 = sys.argv[1], sys.argv[2], float(sys.argv[3]), float(sys.argv[4])
     H = float(sys.argv[5]) if len(sys.argv) > 5 else 1.25e-3
-    d0, d = read(run + "/snapshots/00000.vtu"), read(run + "/snapshots/" + snap)
+    d0, d = read(snapshots(run)[0]), read(run + "/snapshots/" + snap)
     start = {i: (math.hypot(p[0], p[1]), p[2]) for i, p in zip(d0["id"], d0["Points"])}
     zc = 0.5 * (z1 + z2)
     rows = []

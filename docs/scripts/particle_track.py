@@ -6,15 +6,15 @@
 #
 # Usage: python3 particle_track.py ID[,ID...] RUN_DIR FIRST LAST [STRIDE]
 #   (FIRST, LAST, STRIDE index the sorted snapshot list, as a Python slice)
-import sys, glob, os
+import sys, os
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from vtu_read import read
+from vtu_read import read, snapshots
 
 
 def main():
     ids = [int(x) for x in sys.argv[1].split(",")]
     stride = int(sys.argv[5]) if len(sys.argv) > 5 else 1
-    files = sorted(glob.glob(sys.argv[2] + "/snapshots/*.vtu"))[
+    files = snapshots(sys.argv[2])[
         int(sys.argv[3]):int(sys.argv[4]):stride]
     for f in files:
         d = read(f)

@@ -16,8 +16,7 @@ import vtu_read
 SECTORS = 3
 
 for run in sys.argv[1:]:
-    snaps = sorted(f for f in os.listdir(os.path.join(run, 'snapshots')) if f.endswith('.vtu'))
-    last = os.path.join(run, 'snapshots', snaps[-1])
+    last = vtu_read.snapshots(run)[-1]
     d = vtu_read.read(last)
     quarter = all(p[0] >= 0.0 and p[1] >= 0.0 for p in d['Points'])
     span = 0.5 * math.pi if quarter else 2.0 * math.pi
@@ -35,5 +34,5 @@ for run in sys.argv[1:]:
     means = [moment[k] / mass[k] if mass[k] > 0 else float('nan') for k in range(SECTORS)]
     mean = sum(moment) / sum(mass)
     spread = (max(means) - min(means)) / mean
-    print(f"{run}: {snaps[-1]}, {count} projectile particles, mean distance by sector "
+    print(f"{run}: {os.path.basename(last)}, {count} projectile particles, mean distance by sector "
           + ", ".join(f"{1e3 * s:.3f}" for s in means) + f" mm; spread {spread:.3f}")

@@ -19,9 +19,9 @@
 # flaw is below strain eps with probability 1 - exp(-k (V/N3D) eps^m), V the target's
 # volume; eps = sigma_1/E with E = 53.1 GPa (paper section 3.3). The expected number of rings
 # that could have activated a flaw is printed beside the number that fractured (D > 0.9).
-import sys, os, glob, math
+import sys, os, math
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from vtu_read import read
+from vtu_read import read, snapshots
 
 K_WEIBULL, M_WEIBULL, E_YOUNG = 2.7e41, 10.0, 53.1e9
 V_TARGET = math.pi * 0.06165 ** 2 * 0.1233
@@ -78,7 +78,7 @@ def main():
         return
     run, n3d = sys.argv[1], float(sys.argv[2])
     r_lo, r_hi, z_lo = (float(x) for x in (sys.argv[3:6] if len(sys.argv) > 5 else (0.020, 0.030, -0.006)))
-    snaps = sorted(glob.glob(os.path.join(run, 'snapshots', '*.vtu')))
+    snaps = snapshots(run)
     d0 = read(snaps[0])
     band = [d0['id'][i] for i, p in enumerate(d0['Points'])
             if d0['material'][i] == TARGET and r_lo < p[0] < r_hi and p[2] > z_lo]

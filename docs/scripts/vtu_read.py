@@ -1,6 +1,11 @@
 # Reads the binary (base64) DataArrays of this project's snapshots into lists: a .vtu,
 # or a .pvtu (a run over several MPI ranks) with the pieces it lists joined in order.
 import re, base64, struct, sys, math, os
+def snapshots(run):
+    """The snapshot files of run directory `run` in time order, as run.pvd lists them
+    (.vtu, or .pvtu for a run over several MPI ranks, whose pieces are not listed)."""
+    pvd = open(os.path.join(run, 'run.pvd')).read()
+    return [os.path.join(run, f) for f in re.findall(r'file="([^"]+)"', pvd)]
 def read(path):
     s = open(path).read()
     if path.endswith('.pvtu'):
