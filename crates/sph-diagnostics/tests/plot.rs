@@ -310,6 +310,8 @@ fn greek_and_symbols_have_glyphs_distinct_from_ascii() {
     }
     // The minus sign is the hyphen's glyph; an unknown character is drawn as a box.
     assert_eq!(font::glyph('\u{2212}'), font::glyph('-'));
+    assert_eq!(font::glyph('\u{2013}'), font::glyph('-'));
+    assert_eq!(font::glyph('\u{2014}'), font::glyph('-'));
     // The micro sign of "µs" is drawn as the Greek μ, not as the missing-glyph box.
     assert_eq!(font::glyph('\u{b5}'), font::glyph('μ'));
     assert!(font::glyph('☃').is_none());

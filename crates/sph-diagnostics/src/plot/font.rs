@@ -24,11 +24,12 @@ const MISSING: Glyph = [
     0b11111, 0b10001, 0b10001, 0b10001, 0b10001, 0b10001, 0b11111, 0b00000, 0b00000,
 ];
 
-/// The glyph of `c`, or `None` when the font lacks it. U+2212 (minus sign) maps to
-/// the hyphen-minus glyph and U+00B5 (micro sign, as in "µs") to the Greek μ.
+/// The glyph of `c`, or `None` when the font lacks it. U+2212 (minus sign) and the en
+/// and em dashes (U+2013, U+2014, as in "Johnson–Cook") map to the hyphen-minus glyph
+/// and U+00B5 (micro sign, as in "µs") to the Greek μ.
 pub fn glyph(c: char) -> Option<&'static Glyph> {
     let c = match c {
-        '\u{2212}' => '-',
+        '\u{2212}' | '\u{2013}' | '\u{2014}' => '-',
         '\u{b5}' => 'μ',
         c => c,
     };

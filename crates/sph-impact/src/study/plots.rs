@@ -1,7 +1,9 @@
-//! The study's plots: for each parameter with numeric values, `plot_<parameter>.png` with
-//! one panel per metric against that parameter. Points that differ only in that
+//! The study's plots: for each parameter, `plot_<parameter>.png` with one panel per metric
+//! against that parameter. Where its values are numbers, points that differ only in that
 //! parameter are joined by a line (one colour per combination of the other parameters);
-//! a reference value is a dashed black line. Only finished points are drawn.
+//! where they are not (a model's name, a placement's table), each point is a bar of its
+//! own colour, its value in the legend. A reference value is a dashed black line. Only
+//! finished points are drawn.
 
 use crate::study::error::StudyError;
 use crate::study::table::{PointStatus, StudyTable};
@@ -26,6 +28,7 @@ pub fn write_plots(table: &StudyTable, dir: &Path) -> Result<Vec<PathBuf>, Study
             .map(|r| r.values[k].as_f64())
             .collect::<Option<Vec<f64>>>()
         else {
+            written.push(categories(table, &done, k, dir)?);
             continue;
         };
         // The series: the points that share the values of every other parameter.
@@ -102,6 +105,84 @@ pub fn write_plots(table: &StudyTable, dir: &Path) -> Result<Vec<PathBuf>, Study
     Ok(written)
 }
 
+/// The plot of parameter `k` whose values are not all numbers: per metric, a bar for each
+/// finished point in `done` (at x = its position among them), labelled with the point's
+/// number and its value of the parameter.
+fn categories(
+    table: &StudyTable,
+    done: &[&crate::study::table::PointRow],
+    k: usize,
+    dir: &Path,
+) -> Result<PathBuf, StudyError> {
+    let plot_err = |e: sph_diagnostics::plot::PlotError| StudyError::failed(e.to_string());
+    let parameter = &table.parameters[k];
+    let n_metrics = table.metrics.len();
+    let cols = n_metrics.min(3);
+    let rows = n_metrics.div_ceil(cols);
+    let mut fig = Figure::new(520 * cols as u32, 420 * rows as u32);
+    fig.title(if table.description.is_empty() {
+        format!("study: the metrics for each {parameter}")
+    } else {
+        table.description.clone()
+    });
+    for (m, metric) in table.metrics.iter().enumerate() {
+        let ax = fig
+            .panel(m / cols, m % cols, rows, cols)
+            .map_err(plot_err)?;
+        ax.title(metric.clone())
+            .xlabel(format!("point ({})", short(parameter)))
+            .ylabel(metric.clone());
+        for (n, row) in done.iter().enumerate() {
+            let y = row.metrics[m];
+            if !y.is_finite() {
+                continue;
+            }
+            let x = n as f64;
+            let mut style = Style::bars(PALETTE[n % PALETTE.len()]);
+            // The legend in the first panel only: the others repeat its colours.
+            if m == 0 {
+                style = style.label(format!("{}: {}", row.index, legend_value(&row.values[k])));
+            }
+            ax.bars(&[x - 0.35, x + 0.35], &[y], style)
+                .map_err(plot_err)?;
+        }
+        for (rm, value, _) in &table.references {
+            if rm == metric {
+                ax.hline(
+                    *value,
+                    Style::line(BLACK).dashed(6.0, 4.0).label("reference"),
+                )
+                .map_err(plot_err)?;
+            }
+        }
+        ax.grid(true).legend(LegendPos::Best);
+    }
+    let path = dir.join(format!("plot_{}.png", crate::study::plain_name(parameter)));
+    fig.save_png(&path).map_err(|e| StudyError::io(&path, e))?;
+    Ok(path)
+}
+
+/// A value in a legend: a table's `kind` (a placement's, a model's) when it has one,
+/// else the value as the study's table writes it, cut to fit a panel.
+fn legend_value(v: &serde_json::Value) -> String {
+    match v.get("kind").or_else(|| v.get("model")) {
+        Some(serde_json::Value::String(kind)) => abbreviated(kind),
+        _ => abbreviated(&crate::study::table::json_cell(v)),
+    }
+}
+
+/// `text` cut to at most 28 characters (an ellipsis ending the cut ones), for legends.
+fn abbreviated(text: &str) -> String {
+    const MAX: usize = 28;
+    if text.chars().count() <= MAX {
+        text.to_string()
+    } else {
+        let mut cut: String = text.chars().take(MAX - 1).collect();
+        cut.push('…');
+        cut
+    }
+}
+
 /// The last part of a path, for legends (`body.target.material.damage.k` → `damage.k`).
 fn short(path: &str) -> String {
     let parts: Vec<&str> = path.split('.').collect();
@@ -111,6 +192,71 @@ fn short(path: &str) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_parameter_that_is_not_a_number_gets_a_bar_per_point() {
+        use crate::study::table::PointRow;
+        let row = |index: usize, model: &str, beta: f64, status| PointRow {
+            index,
+            values: vec![serde_json::json!(model), serde_json::json!(2.5)],
+            status,
+            metrics: vec![beta],
+            errors: vec![],
+            error: None,
+            wall_time_s: None,
+        };
+        let table = StudyTable {
+            description: String::new(),
+            parameters: vec![
+                "body.projectile.material.strength".into(),
+                "solver.n_target".into(),
+            ],
+            metrics: vec!["beta".into()],
+            references: vec![("beta".into(), 2.51, "experiment".into())],
+            rows: vec![
+                row(0, "johnson-cook", 1.73, PointStatus::Done),
+                row(1, "steinberg-guinan", 1.72, PointStatus::Done),
+                row(2, "von-mises", f64::NAN, PointStatus::Failed),
+            ],
+        };
+        let dir = std::env::temp_dir().join(format!("sph-plots-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let written = write_plots(&table, &dir).unwrap();
+        let names: Vec<String> = written
+            .iter()
+            .map(|p| p.file_name().unwrap().to_string_lossy().into_owned())
+            .collect();
+        assert_eq!(
+            names,
+            [
+                "plot_body.projectile.material.strength.png",
+                "plot_solver.n_target.png"
+            ]
+        );
+        for p in &written {
+            assert_eq!(&std::fs::read(p).unwrap()[1..4], b"PNG");
+        }
+        std::fs::remove_dir_all(dir).unwrap();
+    }
+
+    #[test]
+    fn long_legend_values_are_cut_with_an_ellipsis() {
+        assert_eq!(abbreviated("johnson-cook"), "johnson-cook");
+        let long = "x".repeat(60);
+        let cut = abbreviated(&long);
+        assert_eq!(cut.chars().count(), 28);
+        assert!(cut.ends_with('…'));
+        let placement = serde_json::json!({"kind": "lattice", "spacing": 0.0005});
+        assert_eq!(legend_value(&placement), "lattice");
+        assert_eq!(
+            legend_value(&serde_json::json!("steinberg-guinan")),
+            "steinberg-guinan"
+        );
+        assert_eq!(
+            legend_value(&serde_json::json!({"spacing": 0.5})),
+            "{\"spacing\":0.5}"
+        );
+    }
 
     #[test]
     fn names_for_legends_and_files() {
