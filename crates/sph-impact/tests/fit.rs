@@ -149,6 +149,14 @@ fn a_fit_finds_the_speed_inside_the_constraint_and_resumes_to_the_same_search() 
     );
     let md = std::fs::read_to_string(dir.join("fit.md")).unwrap();
     assert!(md.contains("Best: run"), "{md}");
+    // A plot per free parameter: the runs' metrics and objective against it.
+    for plot in [
+        "plot_body.projectile.velocity_2_.png",
+        "plot_body.target.material.damage.k.png",
+    ] {
+        let bytes = std::fs::read(dir.join(plot)).unwrap();
+        assert_eq!(&bytes[1..4], b"PNG", "{plot}");
+    }
 
     // The same search cut short by a smaller budget, then continued with the full one,
     // makes the same runs.

@@ -921,8 +921,9 @@ impl argmin::core::CostFunction for Problem<'_, '_> {
     }
 }
 
-/// Runs the fit into `dir` (created if needed), writes `fit.csv`, `fit.json` and
-/// `fit.md`, and returns the report. `options.jobs` runs side by side the runs that do
+/// Runs the fit into `dir` (created if needed), writes `fit.csv`, `fit.json`, `fit.md`
+/// and a plot per free parameter (`plot_<parameter>.png`: every run's metrics against
+/// it), and returns the report. `options.jobs` runs side by side the runs that do
 /// not wait on each other: the starting simplex's points, the cases of one point, and
 /// the sensitivity and hold-out runs; the search's later points, each chosen from the
 /// runs before it, come one at a time. `options.stop` stops it at a checkpoint, which
@@ -1191,6 +1192,7 @@ fn write_report(fit: &Fit, report: &FitReport, dir: &Path) -> Result<(), StudyEr
         let path = dir.join(name);
         crate::study::runner::write_whole(&path, text.as_bytes())?;
     }
+    crate::study::fit_plots::write_fit_plots(fit, report, dir)?;
     Ok(())
 }
 

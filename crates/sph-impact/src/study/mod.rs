@@ -31,6 +31,7 @@ mod axis;
 mod derived;
 mod error;
 mod fit;
+mod fit_plots;
 pub mod metric;
 mod plots;
 mod runner;

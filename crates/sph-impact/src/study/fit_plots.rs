@@ -1,0 +1,101 @@
+//! A fit's plots: for each free parameter, `plot_<parameter>.png` with one panel per
+//! fitted metric, per derived metric and for the objective, each against that parameter
+//! over the search's finished runs (points, the best run ringed in black), a target as a
+//! dashed black line and a constraint's bounds as dotted ones. With several free
+//! parameters a panel is the projection of the runs on one of them.
+
+use crate::study::axis::Spacing;
+use crate::study::error::StudyError;
+use crate::study::fit::{Fit, FitReport};
+use crate::study::table::PointStatus;
+use sph_diagnostics::plot::{BLACK, Figure, LegendPos, PALETTE, PlotError, Scale, Style};
+use std::path::{Path, PathBuf};
+
+/// Writes the plots into `dir` and returns their paths (none before a run has finished).
+pub(crate) fn write_fit_plots(
+    fit: &Fit,
+    report: &FitReport,
+    dir: &Path,
+) -> Result<Vec<PathBuf>, StudyError> {
+    let plot_err = |e: PlotError| StudyError::failed(e.to_string());
+    let done: Vec<usize> = (0..report.runs.len())
+        .filter(|&n| report.runs[n].status == PointStatus::Done)
+        .collect();
+    let mut written = Vec::new();
+    if done.is_empty() {
+        return Ok(written);
+    }
+    let fitted: Vec<_> = fit.fitted_targets().collect();
+    // The panels: each fitted metric (its target), each derived one (its constraint's
+    // bounds), the objective.
+    let mut panels: Vec<(String, Vec<(f64, bool)>)> = fitted
+        .iter()
+        .map(|t| (t.column(), vec![(t.value, true)]))
+        .collect();
+    for d in &fit.study.derived {
+        let bounds = fit
+            .constraints
+            .iter()
+            .filter(|c| c.derived == d.name)
+            .flat_map(|c| [c.min, c.max])
+            .flatten()
+            .map(|b| (b, false))
+            .collect();
+        panels.push((d.name.clone(), bounds));
+    }
+    panels.push(("objective".into(), Vec::new()));
+    let cols = panels.len().min(3);
+    let rows = panels.len().div_ceil(cols);
+    for (k, free) in fit.free.iter().enumerate() {
+        let mut fig = Figure::new(520 * cols as u32, 420 * rows as u32);
+        fig.title(if fit.study.description.is_empty() {
+            format!("fit: the runs against {}", free.path)
+        } else {
+            fit.study.description.clone()
+        });
+        for (m, (name, lines)) in panels.iter().enumerate() {
+            let y_of = |n: usize| {
+                let run = &report.runs[n];
+                run.metrics.get(m).copied().unwrap_or(run.objective)
+            };
+            let (x, y): (Vec<f64>, Vec<f64>) = done
+                .iter()
+                .map(|&n| (report.runs[n].values[k], y_of(n)))
+                .filter(|(_, y)| y.is_finite())
+                .unzip();
+            let ax = fig
+                .panel(m / cols, m % cols, rows, cols)
+                .map_err(plot_err)?;
+            ax.title(name.clone())
+                .xlabel(free.path.clone())
+                .ylabel(name.clone());
+            if free.scale == Spacing::Log {
+                ax.xscale(Scale::Log);
+            }
+            ax.scatter(&x, &y, Style::points(PALETTE[0]).size(7.0).label("runs"))
+                .map_err(plot_err)?;
+            if let Some(b) = report.best {
+                let (bx, by) = (report.runs[b].values[k], y_of(b));
+                if by.is_finite() {
+                    ax.scatter(&[bx], &[by], Style::points(BLACK).size(12.0).label("best"))
+                        .map_err(plot_err)?;
+                }
+            }
+            for (i, &(value, target)) in lines.iter().enumerate() {
+                let style = if target {
+                    Style::line(BLACK).dashed(6.0, 4.0).label("target")
+                } else if i == 0 {
+                    Style::line(BLACK).dashed(2.0, 3.0).label("constraint")
+                } else {
+                    Style::line(BLACK).dashed(2.0, 3.0)
+                };
+                ax.hline(value, style).map_err(plot_err)?;
+            }
+            ax.grid(true).legend(LegendPos::Best);
+        }
+        let path = dir.join(format!("plot_{}.png", crate::study::plain_name(&free.path)));
+        fig.save_png(&path).map_err(|e| StudyError::io(&path, e))?;
+        written.push(path);
+    }
+    Ok(written)
+}
