@@ -192,6 +192,19 @@ pub fn fit(
     Ok(report)
 }
 
+/// `sph-impact fit FILE --plots`: draws the fit's plots again from its directory's
+/// fit.csv, without running, and prints their paths.
+pub fn fit_plots(file: &Path, out: Option<&Path>) -> Result<(), CommandError> {
+    let fit = crate::study::Fit::from_toml_file(file).map_err(CommandError::bad_input)?;
+    let dir = study_directory(file, out);
+    let written = crate::study::redraw_fit_plots(&fit, &dir).map_err(study_error)?;
+    let lines: Vec<String> = written
+        .iter()
+        .map(|p| crate::input::printable(&p.display().to_string()).into_owned())
+        .collect();
+    write_stdout(&(lines.join("\n") + "\n"))
+}
+
 /// The study directory: `--out`, else `out/<study file stem>`.
 fn study_directory(file: &Path, out: Option<&Path>) -> std::path::PathBuf {
     match out {

@@ -150,13 +150,35 @@ fn a_fit_finds_the_speed_inside_the_constraint_and_resumes_to_the_same_search() 
     let md = std::fs::read_to_string(dir.join("fit.md")).unwrap();
     assert!(md.contains("Best: run"), "{md}");
     // A plot per free parameter: the runs' metrics and objective against it.
-    for plot in [
+    let plots = [
         "plot_body.projectile.velocity_2_.png",
         "plot_body.target.material.damage.k.png",
-    ] {
-        let bytes = std::fs::read(dir.join(plot)).unwrap();
+    ];
+    let drawn: Vec<Vec<u8>> = plots
+        .iter()
+        .map(|p| std::fs::read(dir.join(p)).unwrap())
+        .collect();
+    for (plot, bytes) in plots.iter().zip(&drawn) {
         assert_eq!(&bytes[1..4], b"PNG", "{plot}");
+        std::fs::remove_file(dir.join(plot)).unwrap();
     }
+    // Drawn again from fit.csv alone (`fit --plots`): the same images.
+    sph_impact::study::redraw_fit_plots(&fit, &dir).unwrap();
+    for (plot, bytes) in plots.iter().zip(&drawn) {
+        assert!(std::fs::read(dir.join(plot)).unwrap() == *bytes, "{plot}");
+    }
+    // Another fit's file does not read these runs.
+    let other = fit_text(target, 5).replace(
+        "body.target.material.damage.k",
+        "body.target.material.damage.m",
+    );
+    let other = other.replace(
+        "min = 1e38\nmax = 1e44\nscale = \"log\"\nstart = 2.7e41",
+        "min = 8.0\nmax = 12.0\nstart = 10.0",
+    );
+    let other = Fit::from_toml_str(&other, "other.toml", &scenes()).unwrap();
+    let e = sph_impact::study::redraw_fit_plots(&other, &dir).unwrap_err();
+    assert!(e.to_string().contains("not this fit's runs"), "{e}");
 
     // The same search cut short by a smaller budget, then continued with the full one,
     // makes the same runs.

@@ -129,6 +129,10 @@ enum Command {
         /// No table on standard output.
         #[arg(long)]
         quiet: bool,
+        /// Only draw the plots again from the directory's fit.csv, without running (for
+        /// a directory the search can no longer replay).
+        #[arg(long)]
+        plots: bool,
     },
     /// List the built-in materials and their parameters.
     Materials {
@@ -277,8 +281,15 @@ fn command(cli: Cli, ranks: &dyn Ranks) -> Result<(), CommandError> {
         Command::Fit {
             fit,
             out,
+            plots: true,
+            ..
+        } => sph_impact::cli::fit_plots(&fit, out.as_deref()),
+        Command::Fit {
+            fit,
+            out,
             jobs,
             quiet,
+            plots: false,
         } => {
             let options = sph_impact::study::StudyOptions {
                 jobs,

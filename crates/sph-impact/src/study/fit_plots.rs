@@ -2,11 +2,12 @@
 //! fitted metric, per derived metric and for the objective, each against that parameter
 //! over the search's finished runs (points, the best run ringed in black), a target as a
 //! dashed black line and a constraint's bounds as dotted ones. With several free
-//! parameters a panel is the projection of the runs on one of them.
+//! parameters a panel is the projection of the runs on one of them. A directory's plots
+//! can be drawn again from its `fit.csv` alone ([`redraw_fit_plots`]).
 
 use crate::study::axis::Spacing;
 use crate::study::error::StudyError;
-use crate::study::fit::{Fit, FitReport};
+use crate::study::fit::{Evaluation, Fit, FitReport};
 use crate::study::table::PointStatus;
 use sph_diagnostics::plot::{BLACK, Figure, LegendPos, PALETTE, PlotError, Scale, Style};
 use std::path::{Path, PathBuf};
@@ -98,4 +99,95 @@ pub(crate) fn write_fit_plots(
         written.push(path);
     }
     Ok(written)
+}
+
+/// Draws the plots of `fit` again from `dir/fit.csv`, without running anything: for a
+/// fit directory that the search can no longer replay (made before a change of the fit
+/// file or of the program). The file's columns must be the fit's (run, the free
+/// parameters, status, the fitted and derived metrics, objective); the best run is the
+/// finished one with the smallest objective.
+pub fn redraw_fit_plots(fit: &Fit, dir: &Path) -> Result<Vec<PathBuf>, StudyError> {
+    let path = dir.join("fit.csv");
+    let text = std::fs::read_to_string(&path).map_err(|e| StudyError::io(&path, e))?;
+    let mut lines = text.lines();
+    let mut expected: Vec<String> = vec!["run".into()];
+    expected.extend(fit.free.iter().map(|f| f.path.clone()));
+    expected.push("status".into());
+    expected.extend(fit.fitted_targets().map(|t| t.column()));
+    expected.extend(fit.study.derived.iter().map(|d| d.name.clone()));
+    expected.push("objective".into());
+    let header = lines.next().unwrap_or_default();
+    if header != expected.join(",") {
+        return Err(StudyError::bad(format!(
+            "{}: its columns are `{header}`, the fit's are `{}`: not this fit's runs",
+            path.display(),
+            expected.join(",")
+        )));
+    }
+    let number = |cell: &str, line: usize| -> Result<f64, StudyError> {
+        if cell.is_empty() {
+            return Ok(f64::NAN);
+        }
+        cell.parse().map_err(|_| {
+            StudyError::bad(format!(
+                "{}:{line}: `{cell}` is not a number",
+                path.display()
+            ))
+        })
+    };
+    let free = fit.free.len();
+    let mut runs = Vec::new();
+    for (k, line) in lines.enumerate() {
+        let n = k + 2;
+        let cells: Vec<&str> = line.split(',').collect();
+        if cells.len() != expected.len() {
+            return Err(StudyError::bad(format!(
+                "{}:{n}: {} cells, the header has {}",
+                path.display(),
+                cells.len(),
+                expected.len()
+            )));
+        }
+        let status = match cells[1 + free] {
+            "done" => PointStatus::Done,
+            "failed" => PointStatus::Failed,
+            "pending" => PointStatus::Pending,
+            other => {
+                return Err(StudyError::bad(format!(
+                    "{}:{n}: status `{other}` is none of done, failed, pending",
+                    path.display()
+                )));
+            }
+        };
+        let index = cells[0]
+            .parse()
+            .map_err(|_| StudyError::bad(format!("{}:{n}: run `{}`", path.display(), cells[0])))?;
+        let values = cells[1..=free]
+            .iter()
+            .map(|c| number(c, n))
+            .collect::<Result<Vec<f64>, _>>()?;
+        let numbers = cells[2 + free..]
+            .iter()
+            .map(|c| number(c, n))
+            .collect::<Result<Vec<f64>, _>>()?;
+        let (metrics, objective) = numbers.split_at(numbers.len() - 1);
+        runs.push(Evaluation {
+            index,
+            values,
+            status,
+            metrics: metrics.to_vec(),
+            objective: objective[0],
+        });
+    }
+    let best = (0..runs.len())
+        .filter(|&n| runs[n].status == PointStatus::Done && runs[n].objective.is_finite())
+        .min_by(|&a, &b| runs[a].objective.total_cmp(&runs[b].objective));
+    let report = FitReport {
+        runs,
+        best,
+        sensitivity: Vec::new(),
+        ended: String::new(),
+        hold_out: Vec::new(),
+    };
+    write_fit_plots(fit, &report, dir)
 }

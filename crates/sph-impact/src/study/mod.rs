@@ -31,7 +31,7 @@ mod axis;
 mod derived;
 mod error;
 mod fit;
-mod fit_plots;
+pub mod fit_plots;
 pub mod metric;
 mod plots;
 mod runner;
@@ -48,6 +48,7 @@ pub use fit::{
     Case, Constraint, Evaluation, Fit, FitReport, Free, HoldOut, Objective, Target, run_fit,
     run_fit_with,
 };
+pub use fit_plots::redraw_fit_plots;
 pub use runner::{StudyOptions, point_dir, run_study};
 pub use slurm::emit_slurm;
 pub use study::{Reference, Study};
