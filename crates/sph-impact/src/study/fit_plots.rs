@@ -8,8 +8,9 @@
 use crate::study::axis::Spacing;
 use crate::study::error::StudyError;
 use crate::study::fit::{Evaluation, Fit, FitReport};
+use crate::study::plots::{panel_grid, plot_err, save_plot};
 use crate::study::table::PointStatus;
-use sph_diagnostics::plot::{BLACK, Figure, LegendPos, PALETTE, PlotError, Scale, Style};
+use sph_diagnostics::plot::{BLACK, LegendPos, PALETTE, Scale, Style};
 use std::path::{Path, PathBuf};
 
 /// Writes the plots into `dir` and returns their paths (none before a run has finished).
@@ -18,7 +19,6 @@ pub(crate) fn write_fit_plots(
     report: &FitReport,
     dir: &Path,
 ) -> Result<Vec<PathBuf>, StudyError> {
-    let plot_err = |e: PlotError| StudyError::failed(e.to_string());
     let done: Vec<usize> = (0..report.runs.len())
         .filter(|&n| report.runs[n].status == PointStatus::Done)
         .collect();
@@ -45,15 +45,9 @@ pub(crate) fn write_fit_plots(
         panels.push((d.name.clone(), bounds));
     }
     panels.push(("objective".into(), Vec::new()));
-    let cols = panels.len().min(3);
-    let rows = panels.len().div_ceil(cols);
     for (k, free) in fit.free.iter().enumerate() {
-        let mut fig = Figure::new(520 * cols as u32, 420 * rows as u32);
-        fig.title(if fit.study.description.is_empty() {
-            format!("fit: the runs against {}", free.path)
-        } else {
-            fit.study.description.clone()
-        });
+        let fallback = format!("fit: the runs against {}", free.path);
+        let (mut fig, cols, rows) = panel_grid(panels.len(), &fit.study.description, fallback);
         for (m, (name, lines)) in panels.iter().enumerate() {
             let y_of = |n: usize| {
                 let run = &report.runs[n];
@@ -94,9 +88,7 @@ pub(crate) fn write_fit_plots(
             }
             ax.grid(true).legend(LegendPos::Best);
         }
-        let path = dir.join(format!("plot_{}.png", crate::study::plain_name(&free.path)));
-        fig.save_png(&path).map_err(|e| StudyError::io(&path, e))?;
-        written.push(path);
+        written.push(save_plot(&fig, dir, &free.path)?);
     }
     Ok(written)
 }

@@ -7,7 +7,7 @@
 
 use crate::study::error::StudyError;
 use crate::study::table::{PointStatus, StudyTable};
-use sph_diagnostics::plot::{BLACK, Figure, LegendPos, PALETTE, Scale, Style};
+use sph_diagnostics::plot::{Axes, BLACK, Figure, LegendPos, PALETTE, PlotError, Scale, Style};
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
@@ -50,17 +50,9 @@ pub fn write_plots(table: &StudyTable, dir: &Path) -> Result<Vec<PathBuf>, Study
                 (a.min(x), b.max(x))
             });
         let log_x = lo > 0.0 && hi / lo >= 100.0;
-        let n_metrics = table.metrics.len();
-        let cols = n_metrics.min(3);
-        let rows = n_metrics.div_ceil(cols);
-        let mut fig = Figure::new(520 * cols as u32, 420 * rows as u32);
-        fig.title(if table.description.is_empty() {
-            format!("study: the metrics against {parameter}")
-        } else {
-            table.description.clone()
-        });
+        let fallback = format!("study: the metrics against {parameter}");
+        let (mut fig, cols, rows) = panel_grid(table.metrics.len(), &table.description, fallback);
         for (m, metric) in table.metrics.iter().enumerate() {
-            let plot_err = |e: sph_diagnostics::plot::PlotError| StudyError::failed(e.to_string());
             let ax = fig
                 .panel(m / cols, m % cols, rows, cols)
                 .map_err(plot_err)?;
@@ -87,20 +79,9 @@ pub fn write_plots(table: &StudyTable, dir: &Path) -> Result<Vec<PathBuf>, Study
                 ax.scatter(&x, &y, Style::points(color).size(7.0))
                     .map_err(plot_err)?;
             }
-            for (rm, value, _) in &table.references {
-                if rm == metric {
-                    ax.hline(
-                        *value,
-                        Style::line(BLACK).dashed(6.0, 4.0).label("reference"),
-                    )
-                    .map_err(plot_err)?;
-                }
-            }
-            ax.grid(true).legend(LegendPos::Best);
+            references(ax, table, metric)?;
         }
-        let path = dir.join(format!("plot_{}.png", crate::study::plain_name(parameter)));
-        fig.save_png(&path).map_err(|e| StudyError::io(&path, e))?;
-        written.push(path);
+        written.push(save_plot(&fig, dir, parameter)?);
     }
     Ok(written)
 }
@@ -114,17 +95,9 @@ fn categories(
     k: usize,
     dir: &Path,
 ) -> Result<PathBuf, StudyError> {
-    let plot_err = |e: sph_diagnostics::plot::PlotError| StudyError::failed(e.to_string());
     let parameter = &table.parameters[k];
-    let n_metrics = table.metrics.len();
-    let cols = n_metrics.min(3);
-    let rows = n_metrics.div_ceil(cols);
-    let mut fig = Figure::new(520 * cols as u32, 420 * rows as u32);
-    fig.title(if table.description.is_empty() {
-        format!("study: the metrics for each {parameter}")
-    } else {
-        table.description.clone()
-    });
+    let fallback = format!("study: the metrics for each {parameter}");
+    let (mut fig, cols, rows) = panel_grid(table.metrics.len(), &table.description, fallback);
     for (m, metric) in table.metrics.iter().enumerate() {
         let ax = fig
             .panel(m / cols, m % cols, rows, cols)
@@ -146,20 +119,54 @@ fn categories(
             ax.bars(&[x - 0.35, x + 0.35], &[y], style)
                 .map_err(plot_err)?;
         }
-        for (rm, value, _) in &table.references {
-            if rm == metric {
-                ax.hline(
-                    *value,
-                    Style::line(BLACK).dashed(6.0, 4.0).label("reference"),
-                )
-                .map_err(plot_err)?;
-            }
-        }
-        ax.grid(true).legend(LegendPos::Best);
+        references(ax, table, metric)?;
     }
+    save_plot(&fig, dir, parameter)
+}
+
+/// The study's references of `metric` as dashed black lines; then the grid and legend.
+fn references(ax: &mut Axes, table: &StudyTable, metric: &str) -> Result<(), StudyError> {
+    for (rm, value, _) in &table.references {
+        if rm == metric {
+            ax.hline(
+                *value,
+                Style::line(BLACK).dashed(6.0, 4.0).label("reference"),
+            )
+            .map_err(plot_err)?;
+        }
+    }
+    ax.grid(true).legend(LegendPos::Best);
+    Ok(())
+}
+
+/// A figure of `panels` panels, three to a row, titled `description` (`fallback` when it
+/// is empty), with its columns and rows.
+pub(crate) fn panel_grid(
+    panels: usize,
+    description: &str,
+    fallback: String,
+) -> (Figure, usize, usize) {
+    let cols = panels.clamp(1, 3);
+    let rows = panels.div_ceil(cols);
+    let mut fig = Figure::new(520 * cols as u32, 420 * rows as u32);
+    fig.title(if description.is_empty() {
+        fallback
+    } else {
+        description.to_string()
+    });
+    (fig, cols, rows)
+}
+
+/// Saves `fig` as `dir/plot_<parameter>.png` and returns its path.
+pub(crate) fn save_plot(fig: &Figure, dir: &Path, parameter: &str) -> Result<PathBuf, StudyError> {
     let path = dir.join(format!("plot_{}.png", crate::study::plain_name(parameter)));
     fig.save_png(&path).map_err(|e| StudyError::io(&path, e))?;
     Ok(path)
+}
+
+/// A plotting error as the study's.
+pub(crate) fn plot_err(e: PlotError) -> StudyError {
+    StudyError::failed(e.to_string())
 }
 
 /// A value in a legend: a table's `kind` (a placement's, a model's) when it has one,
