@@ -123,28 +123,21 @@ fn write_part<D: SceneDimension>(
     let (rank, size) = (ranks.rank(), ranks.size());
     let snapshots = dir.join("snapshots");
     let path = snapshots.join(file_name(index, size, Some(rank)));
-    let written = if size == 1 {
-        atomic::write_with(&path, false, |f| whole.write_to(f))
-    } else {
-        let rows = piece_rows(sim.state.particles.len(), rank, size);
-        atomic::write_with(&path, false, |f| whole.piece(rows).write_to(f))
-    };
-    if size > 1 {
-        // Every piece on disk before the .pvtu (and any checkpoint) that lists it.
-        let ok = ranks.all_gather(vec![if written.is_ok() { 1.0 } else { 0.0 }]);
-        written?;
-        let failed: Vec<String> = (0..size)
-            .filter(|&k| ok.part(k) != [1.0])
-            .map(|k| k.to_string())
-            .collect();
-        if !failed.is_empty() {
-            return Err(RunError::Diagnostics(format!(
-                "snapshot {index}: rank(s) {} could not write their piece",
-                failed.join(", ")
-            )));
-        }
-    } else {
-        written?;
+    // On one rank the piece is every particle: the whole .vtu.
+    let rows = piece_rows(sim.state.particles.len(), rank, size);
+    let written = atomic::write_with(&path, false, |f| whole.piece(rows).write_to(f));
+    // Every piece on disk before the .pvtu (and any checkpoint) that lists it.
+    let ok = ranks.all_gather(vec![if written.is_ok() { 1.0 } else { 0.0 }]);
+    written?;
+    let failed: Vec<String> = (0..size)
+        .filter(|&k| ok.part(k) != [1.0])
+        .map(|k| k.to_string())
+        .collect();
+    if !failed.is_empty() {
+        return Err(RunError::Diagnostics(format!(
+            "snapshot {index}: rank(s) {} could not write their piece",
+            failed.join(", ")
+        )));
     }
     let Some(pvd) = pvd else {
         return Ok(());
