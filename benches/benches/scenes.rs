@@ -24,7 +24,7 @@ use sph_benches::{Counting, LIVE, PEAK, peak_rss};
 use sph_core::{CellList, NeighborSearch, ScalarSupport};
 use sph_impact::Simulation;
 use sph_impact::scene::{Scene, SceneSimulation};
-use sph_impact::solver::NeighbourSearch;
+use sph_impact::solver::{NeighbourSearch, shares};
 use sph_kernel::KernelChoice;
 use std::path::Path;
 use std::sync::atomic::Ordering;
@@ -260,8 +260,7 @@ fn halo_sizes<D: sph_core::Dimension>(sim: &Simulation<D, KernelChoice>) {
         .expect("search");
     let n = p.len();
     // A row's cost is its pair count (and one for the row itself).
-    let cost: Vec<usize> = (0..n).map(|i| list.count(i) + 1).collect();
-    let total: usize = cost.iter().sum();
+    let cost: Vec<u64> = (0..n).map(|i| list.count(i) as u64 + 1).collect();
     println!(
         "{n} particles, {:.1} neighbours per particle; domains of contiguous rows:",
         list.mean_count()
@@ -270,12 +269,10 @@ fn halo_sizes<D: sph_core::Dimension>(sim: &Simulation<D, KernelChoice>) {
         "  domains | halo / own, mean | halo / own, largest | largest own × N/n | largest (own + halo) × N/n"
     );
     for domains in [2usize, 4, 8, 16, 32, 64, 128, 256, 512, 1024] {
-        // The midpoint of a row's cost decides its domain (solver/ranks.rs, `shares`).
-        let mut owner = Vec::with_capacity(n);
-        let mut before = 0;
-        for &c in &cost {
-            owner.push(((2 * before + c) * domains / (2 * total)).min(domains - 1));
-            before += c;
+        // The ranks' rule for the pair blocks, applied to rows (`sph_impact::solver::shares`).
+        let mut owner = vec![0; n];
+        for (d, rows) in shares(&cost, domains).into_iter().enumerate() {
+            owner[rows].fill(d);
         }
         let mut own = vec![0usize; domains];
         let mut halo = vec![0usize; domains];

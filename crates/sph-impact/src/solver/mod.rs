@@ -26,7 +26,7 @@ pub use damage::DamageEvents;
 pub use error::SolverError;
 pub use material::Material;
 pub use pair_rules::{NoPairRule, PairRule, PairView};
-pub use ranks::{Gathered, OneRank, Ranks};
+pub use ranks::{Gathered, OneRank, Ranks, shares};
 pub use simulation::{Conserved, PhaseTimes, Simulation, SolverCheckpoint, StepInfo};
 pub use state::State;
 pub use timestep::TimestepVote;

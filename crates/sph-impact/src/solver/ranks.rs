@@ -70,7 +70,7 @@ impl Ranks for OneRank {
 /// The contiguous ranges of blocks of each of `size` ranks, given each block's cost:
 /// rank k takes the blocks whose cost midpoint lies in [k, k + 1) × total/size. Every
 /// rank computes the same ranges from the same costs.
-pub(crate) fn shares(costs: &[u64], size: usize) -> Vec<Range<usize>> {
+pub fn shares(costs: &[u64], size: usize) -> Vec<Range<usize>> {
     let total: u64 = costs.iter().sum();
     let mut ranges = Vec::with_capacity(size);
     let mut start = 0;
