@@ -1028,6 +1028,80 @@ fn rz_yield_only_coupling_keeps_a_damaged_rods_hoop_stress() {
     assert!(particle > 0.2, "{particle}");
 }
 
+/// The principal artificial stress' hoop part acts where only the hoop stress is
+/// tensile: an RZ rod under σ = diag(−σ0/2, −σ0/2, σ0) in (r, z, θ) has no tensile
+/// in-plane principal stress, so its in-plane R is zero, but R_θθ = −ε σ0/ρ². The pair
+/// loop evaluates the kernel ratio f_ij only for pairs that need it; a pair whose in-plane
+/// R_i + R_j vanishes still needs it for a side's hoop force. After one tiny step the
+/// hoop force's share of every interior ring's acceleration is nonzero and linear in ε.
+#[test]
+fn rz_principal_artificial_stress_acts_on_a_hoop_only_tension() {
+    let radial = |epsilon: f64| -> Vec<(f64, f64)> {
+        let (eos, strength) = elastic();
+        let (n, dx, sigma0) = (12, 1.0e-3, 1.0e8);
+        let mut p = Particles::<Dim2>::new();
+        for a in 0..n {
+            for b in 0..n {
+                let x = DVec2::new((a as f64 + 0.5) * dx, (b as f64 + 0.5) * dx);
+                p.push(ParticleInit {
+                    position: x,
+                    velocity: DVec2::ZERO,
+                    mass: RHO * dx * dx * x.x,
+                    density: RHO,
+                    specific_energy: 0.0,
+                    smoothing_length: 2.5 * dx,
+                    material: 0,
+                });
+            }
+        }
+        let scheme = SchemeConfig {
+            geometry: sph_impact::Geometry::Axisymmetric,
+            artificial_stress: ArtificialStress {
+                epsilon,
+                exponent: 4,
+                form: ArtificialStressForm::Principal,
+                cap: None,
+            },
+            ..Default::default()
+        };
+        let material = Material::solid("aluminium", eos, strength);
+        let mut sim =
+            Simulation::new(p, vec![material], scheme, WendlandC2, Vec::new(), None).unwrap();
+        let s = sph_core::glam::DMat3::from_diagonal(sph_core::glam::DVec3::new(
+            -0.5 * sigma0,
+            -0.5 * sigma0,
+            sigma0,
+        ));
+        sim.state.stress.iter_mut().for_each(|x| *x = s);
+        let dt = 1e-10;
+        sim.step(dt).unwrap();
+        let q = &sim.state.particles;
+        (0..q.len())
+            .map(|i| (q.position[i].x, q.velocity[i].x / dt))
+            .collect()
+    };
+    let (off, half, full) = (radial(0.0), radial(0.1), radial(0.2));
+    let mut checked = 0;
+    for k in 0..off.len() {
+        let r = off[k].0;
+        // Away from the axis zone and the outer surface.
+        if r > 3.0 * 2.5e-3 && r < 10.0e-3 {
+            let (d1, d2) = (half[k].1 - off[k].1, full[k].1 - off[k].1);
+            assert!(
+                d1.abs() > 1e-3 * off[k].1.abs(),
+                "ring {k}: hoop part {d1} of {}",
+                off[k].1
+            );
+            assert!(
+                (d2 / d1 - 2.0).abs() < 1e-6,
+                "ring {k}: {d2} against 2 × {d1}"
+            );
+            checked += 1;
+        }
+    }
+    assert!(checked >= 12, "{checked}");
+}
+
 /// The RZ rod of [`rz_hoop_stress_pushes_a_free_rod_outward_at_sigma_over_rho_r`] under
 /// the stress coupling `coupling`, every ring at damage `damage` (none: no damage model),
 /// after one tiny step: the largest |a_r ρ r/σ0 − 1| beyond the axis zone, and

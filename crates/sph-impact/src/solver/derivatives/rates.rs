@@ -96,6 +96,8 @@ struct Row<D: Dimension> {
     s_undamaged: D::Tensor,
     d: f64,
     eta: f64,
+    /// RZ: the hoop component R_θθ of its artificial stress (0 otherwise).
+    hoop_r: f64,
 }
 
 /// One side's view of an evaluated pair (pass 2): its index, ∇W̄ from its side, its
@@ -235,6 +237,7 @@ fn rates_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
         },
         d: if damaged { ext.damage[i] } else { 0.0 },
         eta: ext.density[i] * smooth_r(i),
+        hoop_r: hoop_astress(i),
     };
     // One side's share of the pair (`share`), with what it reads of the scheme.
     let sharing = Sharing {
@@ -412,6 +415,9 @@ fn rates_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
                 r,
                 r_hat,
                 g,
+                // f_ij for the hoop force only where a side has one: a row whose
+                // R_θθ is 0 adds no hoop force whatever its sum (`finish`).
+                rz && (a.hoop_r != 0.0 || hoop_astress(j) != 0.0),
             )
         } else {
             (D::Vector::ZERO, 0.0)

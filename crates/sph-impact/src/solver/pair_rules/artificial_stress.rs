@@ -11,8 +11,8 @@ use sph_riemann::ArtificialStress;
 
 /// (the artificial-stress force per unit partner mass, f_ij) of the pair (i, j) with
 /// r = x_i − x_j, r̂, the kernel gradient `g` and the RZ weights r_i, r_j (1 in
-/// Cartesian runs); zero where R_i + R_j vanishes (outside RZ, where f_ij is still
-/// needed).
+/// Cartesian runs); f_ij is 0 where R_i + R_j vanishes unless `hoop` (RZ: a side has a
+/// hoop component R_θθ, whose force needs f_ij; `rates`' finish).
 #[inline(always)]
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn artificial_stress<D: Dimension, P: PairKernel<D>, const RZ: bool>(
@@ -24,12 +24,17 @@ pub(crate) fn artificial_stress<D: Dimension, P: PairKernel<D>, const RZ: bool>(
     r: D::Vector,
     r_hat: D::Vector,
     g: D::Vector,
+    hoop: bool,
 ) -> (D::Vector, f64) {
     let r_sum = ext.astress[i] * (1.0 / ri) + ext.astress[j] * (1.0 / rj);
-    if r_sum.double_dot(&r_sum) > 0.0 || RZ {
+    if r_sum.double_dot(&r_sum) > 0.0 || hoop {
         let dp = 0.5 * (ext.spacing0[i] + ext.spacing0[j]);
         let f = astress.kernel_factor(pk.w(i, j, r) / pk.w_at(i, j, r_hat, dp));
         (r_sum.mul_vec(g) * f, f)
+    } else if RZ {
+        // The zero force with the signs of zero that the product with f ≥ 0 gives, so
+        // that skipping the kernel ratio changes no bit of the pair's force.
+        (r_sum.mul_vec(g) * 0.0, 0.0)
     } else {
         (D::Vector::ZERO, 0.0)
     }
