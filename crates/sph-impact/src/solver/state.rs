@@ -298,6 +298,10 @@ pub(crate) struct Extended<'a, D: Dimension> {
     pub damage_tensor: Vec<sph_core::glam::DMat3>,
     /// Artificial-stress tensor R (empty when the artificial stress is off).
     pub astress: Vec<D::Tensor>,
+    /// RZ: the hoop component R_θθ of each particle's artificial stress, ghosts included,
+    /// which the hoop force balances (empty in Cartesian runs and when the artificial
+    /// stress is off).
+    pub astress_hoop: Vec<f64>,
     /// Whether each particle is past its adhesion limit (in tension and damaged,
     /// sph_damage::decoupling::past_adhesion); empty unless fractured material is
     /// decoupled (`SchemeConfig::decouple_damaged`).
@@ -423,6 +427,7 @@ impl<'a, D: Dimension> Extended<'a, D> {
             coupling: sph_damage::StressCoupling::default(),
             damage_tensor: Vec::new(),
             astress: Vec::new(),
+            astress_hoop: Vec::new(),
             adhesion: Vec::new(),
             bulk_sound_speed: Vec::new(),
             specific_energy: Vec::new(),

@@ -96,8 +96,6 @@ struct Row<D: Dimension> {
     s_undamaged: D::Tensor,
     d: f64,
     eta: f64,
-    /// RZ: the hoop component R_θθ of its artificial stress (0 otherwise).
-    hoop_r: f64,
 }
 
 /// One side's view of an evaluated pair (pass 2): its index, ∇W̄ from its side, its
@@ -212,9 +210,7 @@ fn rates_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
     // force balances (`finish`).
     let hoop_astress = |i: usize| {
         if rz && use_astress {
-            let p = ext.pressure[i];
-            let s_tt = if solid { ext.stress(i).z_axis.z } else { 0.0 };
-            astress.hoop(s_tt - p, p, ext.density[i])
+            ext.astress_hoop[i]
         } else {
             0.0
         }
@@ -237,7 +233,6 @@ fn rates_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
         },
         d: if damaged { ext.damage[i] } else { 0.0 },
         eta: ext.density[i] * smooth_r(i),
-        hoop_r: hoop_astress(i),
     };
     // One side's share of the pair (`share`), with what it reads of the scheme.
     let sharing = Sharing {
@@ -417,7 +412,7 @@ fn rates_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
                 g,
                 // f_ij for the hoop force only where a side has one: a row whose
                 // R_θθ is 0 adds no hoop force whatever its sum (`finish`).
-                rz && (a.hoop_r != 0.0 || hoop_astress(j) != 0.0),
+                rz && (ext.astress_hoop[i] != 0.0 || ext.astress_hoop[j] != 0.0),
             )
         } else {
             (D::Vector::ZERO, 0.0)

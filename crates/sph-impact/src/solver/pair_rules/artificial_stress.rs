@@ -27,7 +27,7 @@ pub(crate) fn artificial_stress<D: Dimension, P: PairKernel<D>, const RZ: bool>(
     hoop: bool,
 ) -> (D::Vector, f64) {
     let r_sum = ext.astress[i] * (1.0 / ri) + ext.astress[j] * (1.0 / rj);
-    if r_sum.double_dot(&r_sum) > 0.0 || hoop {
+    if r_sum.double_dot(&r_sum) > 0.0 || (RZ && hoop) {
         let dp = 0.5 * (ext.spacing0[i] + ext.spacing0[j]);
         let f = astress.kernel_factor(pk.w(i, j, r) / pk.w_at(i, j, r_hat, dp));
         (r_sum.mul_vec(g) * f, f)

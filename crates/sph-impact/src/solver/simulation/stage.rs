@@ -317,6 +317,9 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
         }
         if !self.scheme.artificial_stress.is_off() {
             ext.astress = artificial_stress_tensors(&ext, &self.scheme.artificial_stress);
+            if self.scheme.geometry == Geometry::Axisymmetric {
+                ext.astress_hoop = artificial_stress_hoops(&ext, &self.scheme.artificial_stress);
+            }
         }
         let t2 = Instant::now();
         let need_grads = self.scheme.limiter != sph_riemann::Limiter::None
@@ -560,6 +563,27 @@ pub(super) fn artificial_stress_tensors<D: Dimension>(
                 D::project(&ext.stress(k)) - D::Tensor::IDENTITY * p
             };
             a.tensor(&sigma, p, ext.density[k])
+        })
+        .collect()
+}
+
+/// RZ: the hoop component R_θθ of every particle's artificial stress, ghosts included,
+/// from σ_θθ = (1 − D) S_θθ − P_D (paper §2.3; axisymmetric.rs): the pair loop needs the
+/// kernel ratio f_ij for the hoop force only where a side's is nonzero.
+pub(super) fn artificial_stress_hoops<D: Dimension>(
+    ext: &Extended<'_, D>,
+    a: &sph_riemann::ArtificialStress,
+) -> Vec<f64> {
+    (0..ext.position.len())
+        .into_par_iter()
+        .map(|k| {
+            let p = ext.pressure[k];
+            let s_tt = if ext.has_stress() {
+                ext.stress(k).z_axis.z
+            } else {
+                0.0
+            };
+            a.hoop(s_tt - p, p, ext.density[k])
         })
         .collect()
 }
