@@ -298,6 +298,10 @@ pub(crate) struct Extended<'a, D: Dimension> {
     pub damage_tensor: Vec<sph_core::glam::DMat3>,
     /// Artificial-stress tensor R (empty when the artificial stress is off).
     pub astress: Vec<D::Tensor>,
+    /// Whether each particle's artificial-stress tensor R has a nonzero entry, ghosts
+    /// included (empty when the artificial stress is off): in Cartesian runs a pair of
+    /// two zero tensors skips the term.
+    pub astress_on: Vec<bool>,
     /// RZ: the hoop component R_θθ of each particle's artificial stress, ghosts included,
     /// which the hoop force balances (empty in Cartesian runs and when the artificial
     /// stress is off).
@@ -427,6 +431,7 @@ impl<'a, D: Dimension> Extended<'a, D> {
             coupling: sph_damage::StressCoupling::default(),
             damage_tensor: Vec::new(),
             astress: Vec::new(),
+            astress_on: Vec::new(),
             astress_hoop: Vec::new(),
             adhesion: Vec::new(),
             bulk_sound_speed: Vec::new(),

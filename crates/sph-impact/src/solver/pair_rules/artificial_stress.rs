@@ -26,6 +26,11 @@ pub(crate) fn artificial_stress<D: Dimension, P: PairKernel<D>, const RZ: bool>(
     g: D::Vector,
     hoop: bool,
 ) -> (D::Vector, f64) {
+    // Two zero tensors: R_i + R_j is zero and a Cartesian pair gets no term (RZ goes on,
+    // for the hoop test and the signs of its zero force below).
+    if !RZ && !ext.astress_on[i] && !ext.astress_on[j] {
+        return (D::Vector::ZERO, 0.0);
+    }
     let r_sum = ext.astress[i] * (1.0 / ri) + ext.astress[j] * (1.0 / rj);
     if r_sum.double_dot(&r_sum) > 0.0 || (RZ && hoop) {
         let dp = 0.5 * (ext.spacing0[i] + ext.spacing0[j]);

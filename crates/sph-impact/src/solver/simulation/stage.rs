@@ -317,6 +317,7 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
         }
         if !self.scheme.artificial_stress.is_off() {
             ext.astress = artificial_stress_tensors(&ext, &self.scheme.artificial_stress);
+            ext.astress_on = ext.astress.iter().map(|r| *r != D::Tensor::ZERO).collect();
             if self.scheme.geometry == Geometry::Axisymmetric {
                 ext.astress_hoop = artificial_stress_hoops(&ext, &self.scheme.artificial_stress);
             }
