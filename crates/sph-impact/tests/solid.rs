@@ -1038,22 +1038,8 @@ fn rz_yield_only_coupling_keeps_a_damaged_rods_hoop_stress() {
 fn rz_principal_artificial_stress_acts_on_a_hoop_only_tension() {
     let radial = |epsilon: f64| -> Vec<(f64, f64)> {
         let (eos, strength) = elastic();
-        let (n, dx, sigma0) = (12, 1.0e-3, 1.0e8);
-        let mut p = Particles::<Dim2>::new();
-        for a in 0..n {
-            for b in 0..n {
-                let x = DVec2::new((a as f64 + 0.5) * dx, (b as f64 + 0.5) * dx);
-                p.push(ParticleInit {
-                    position: x,
-                    velocity: DVec2::ZERO,
-                    mass: RHO * dx * dx * x.x,
-                    density: RHO,
-                    specific_energy: 0.0,
-                    smoothing_length: 2.5 * dx,
-                    material: 0,
-                });
-            }
-        }
+        let sigma0 = 1.0e8;
+        let p = rz_rod_at_rest(12, 1.0e-3, RHO);
         let scheme = SchemeConfig {
             geometry: sph_impact::Geometry::Axisymmetric,
             artificial_stress: ArtificialStress {
@@ -1102,16 +1088,9 @@ fn rz_principal_artificial_stress_acts_on_a_hoop_only_tension() {
     assert!(checked >= 12, "{checked}");
 }
 
-/// The RZ rod of [`rz_hoop_stress_pushes_a_free_rod_outward_at_sigma_over_rho_r`] under
-/// the stress coupling `coupling`, every ring at damage `damage` (none: no damage model),
-/// after one tiny step: the largest |a_r ρ r/σ0 − 1| beyond the axis zone, and
-/// on the free outer surface.
-fn rz_free_rod_hoop_push(coupling: sph_damage::StressCoupling, damage: Option<f64>) -> (f64, f64) {
-    let (eos, strength) = elastic();
-    let (n, dx, sigma0) = (16, 1.0e-3, 1.0e8);
-    // σ = S − P I with P = σ0/3: S = diag(σ0/3, σ0/3, −2σ0/3) in (r, z, θ).
-    let p0 = sigma0 / 3.0;
-    let rho = RHO * (1.0 + p0 / BULK);
+/// An RZ rod at rest: n × n rings of spacing dx from the axis, at density `rho`, each ring
+/// of mass ρ dx² r (per radian), h = 2.5 dx.
+fn rz_rod_at_rest(n: usize, dx: f64, rho: f64) -> Particles<Dim2> {
     let mut p = Particles::<Dim2>::new();
     for a in 0..n {
         for b in 0..n {
@@ -1127,6 +1106,20 @@ fn rz_free_rod_hoop_push(coupling: sph_damage::StressCoupling, damage: Option<f6
             });
         }
     }
+    p
+}
+
+/// The RZ rod of [`rz_hoop_stress_pushes_a_free_rod_outward_at_sigma_over_rho_r`] under
+/// the stress coupling `coupling`, every ring at damage `damage` (none: no damage model),
+/// after one tiny step: the largest |a_r ρ r/σ0 − 1| beyond the axis zone, and
+/// on the free outer surface.
+fn rz_free_rod_hoop_push(coupling: sph_damage::StressCoupling, damage: Option<f64>) -> (f64, f64) {
+    let (eos, strength) = elastic();
+    let (n, dx, sigma0) = (16, 1.0e-3, 1.0e8);
+    // σ = S − P I with P = σ0/3: S = diag(σ0/3, σ0/3, −2σ0/3) in (r, z, θ).
+    let p0 = sigma0 / 3.0;
+    let rho = RHO * (1.0 + p0 / BULK);
+    let p = rz_rod_at_rest(n, dx, rho);
     let scheme = SchemeConfig {
         geometry: sph_impact::Geometry::Axisymmetric,
         stress_coupling: coupling,
