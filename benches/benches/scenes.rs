@@ -223,11 +223,29 @@ fn search_only(case: &Case) {
     for _ in 0..10 {
         grid.neighbors(&p.position, &support).expect("search");
     }
-    println!(
-        "{} particles: one search {:.3} s",
-        p.len(),
-        t0.elapsed().as_secs_f64() / 10.0
-    );
+    let whole = t0.elapsed().as_secs_f64() / 10.0;
+    println!("{} particles: one search {whole:.3} s", p.len());
+    // A rank's search over MPI: the rows of each of N equal contiguous ranges and the
+    // particles that pair with them (`CellList::neighbors_of_rows`), one search each.
+    let n = p.len();
+    for domains in [2usize, 8, 64] {
+        let times: Vec<f64> = (0..domains)
+            .map(|d| {
+                let rows = d * n / domains..(d + 1) * n / domains;
+                let t0 = Instant::now();
+                grid.neighbors_of_rows(&p.position, &support, rows)
+                    .expect("search");
+                t0.elapsed().as_secs_f64()
+            })
+            .collect();
+        let mean = times.iter().sum::<f64>() / domains as f64;
+        let largest = times.iter().cloned().fold(0.0, f64::max);
+        println!(
+            "  the rows of one of {domains} domains: one search {mean:.4} s mean, {largest:.4} s largest ({:.2} and {:.2} × the whole search / {domains})",
+            mean / (whole / domains as f64),
+            largest / (whole / domains as f64)
+        );
+    }
     for skin in [1.05, 1.1, 1.2] {
         let h: Vec<f64> = p.smoothing_length.iter().map(|h| h * skin).collect();
         let support = ScalarSupport::new(&h).expect("radii");

@@ -16,15 +16,18 @@
 //! bodies (docs/performance.md, "The scenes users run").
 //!
 //! **Some rows only.** [`CellList::neighbors_of_rows`] gives the rows of a range as the
-//! whole search does (the others empty): it gathers the range's rows and, for the pairs
-//! only the other side finds, the particles outside whose radius reaches the range's
-//! bounding box. A rank of a run over MPI searches its own rows so.
+//! whole search does (the others empty): it grids the range's rows and their halo only
+//! (halo.rs: the particles outside that may pair with a row, from the boxes of the rows'
+//! blocks), gathers the rows and, for the pairs only the other side finds, the halo
+//! particles whose own radius reaches one of those boxes. A rank of a run over MPI
+//! searches its own rows so, in about its share of the time of the whole search.
 //!
 //! A level whose bounding box would need more than a few cells per particle (points far
 //! outside the bulk) switches from a dense `cell_start` table to a sorted list of cell
 //! keys searched by bisection, so memory stays O(N) for any point cloud.
 
 use super::criterion::check_inputs;
+use super::halo::{Region, regions_of_rows};
 use super::list::{CHUNK, Chunk};
 use super::{NeighborList, NeighborSearch, PairCriterion};
 use crate::error::CoreError;
@@ -39,6 +42,11 @@ pub const DEFAULT_CELL_FRACTION: f64 = 0.5;
 /// Cell coordinates beyond this (in cells) are refused: the domain is absurdly large
 /// for the smallest support radius.
 const MAX_CELL_COORD: f64 = 1.0e15;
+
+/// The largest side of a box of a partial search's rows, in reaches of its particles
+/// (`regions_of_rows`): smaller boxes find a tighter halo, and each particle near the
+/// rows is tested against more of them.
+const HALO_REGION_SIZE: f64 = 4.0;
 
 /// Statistics of one grid level of the last build.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -125,10 +133,11 @@ impl<V: Vector> NeighborSearch<V> for CellList {
 
 impl CellList {
     /// The neighbours of the particles `rows` only, the same rows as [`NeighborSearch::neighbors`]
-    /// gives them; every other row is empty. Besides the rows' own gathers, the particles
-    /// outside whose radius reaches the rows' bounding box are gathered for the pairs only
-    /// they find (|r_ij| ≥ r_i): a process that evaluates some rows (a rank of a run over
-    /// MPI) searches those and a layer around them, not every particle.
+    /// gives them; every other row is empty. Only the rows and their halo are gridded;
+    /// besides the rows' own gathers, the halo particles whose radius reaches a box of
+    /// the rows' blocks are gathered for the pairs only they find (|r_ij| ≥ r_i): a
+    /// process that evaluates some rows (a rank of a run over MPI) searches those and a
+    /// layer around them, not every particle.
     pub fn neighbors_of_rows<V: Vector, C: PairCriterion<V>>(
         &mut self,
         positions: &[V],
@@ -155,10 +164,54 @@ impl CellList {
             }
         }
         let r_max = radius.iter().cloned().fold(0.0, f64::max);
+        let whole = rows.start == 0 && rows.end == n;
+        // A partial search grids the rows and their halo only (halo.rs): the particles
+        // outside that can pair with a row, found from the boxes of the rows' blocks.
+        // Every pair of a row has its other side among them, so the rows are the whole
+        // search's, and a rank of a run over MPI grids about its share of the particles.
+        // Of the halo, only a particle whose own radius reaches a block's box gathers
+        // (for the pairs that only it finds, |r_ij| ≥ r_i).
+        let outside: Vec<Outside> = if whole {
+            Vec::new()
+        } else {
+            // Two levels of boxes: a particle far from a group of eight regions tests
+            // none of them.
+            let regions = regions_of_rows(positions, criterion, rows.clone(), HALO_REGION_SIZE)?;
+            let groups: Vec<Region<V>> = regions
+                .chunks(8)
+                .map(|c| c.iter().skip(1).fold(c[0], |u, b| u.union(b)))
+                .collect();
+            (0..n)
+                .into_par_iter()
+                .map(|i| {
+                    let (x, r) = (positions[i], radius[i]);
+                    let mut found = Outside::Away;
+                    if rows.contains(&i) {
+                        return found;
+                    }
+                    for (g, group) in groups.iter().enumerate() {
+                        if !group.may_pair(x, r) {
+                            continue;
+                        }
+                        for b in &regions[8 * g..(8 * g + 8).min(regions.len())] {
+                            let d = b.distance(x);
+                            if d < r {
+                                return Outside::Reaches;
+                            }
+                            if d < b.reach {
+                                found = Outside::Halo;
+                            }
+                        }
+                    }
+                    found
+                })
+                .collect()
+        };
+        let gridded = |i: usize| whole || rows.contains(&i) || outside[i] != Outside::Away;
 
         // Bin particles into levels by octave of radius.
         let mut members: Vec<Vec<u32>> = vec![Vec::new(); self.max_levels];
-        for (i, &r) in radius.iter().enumerate() {
+        for (i, &r) in radius.iter().enumerate().filter(|&(i, _)| gridded(i)) {
             let l = ((r_max / r).log2().floor().max(0.0) as usize).min(self.max_levels - 1);
             members[l].push(i as u32);
         }
@@ -170,27 +223,6 @@ impl CellList {
             .collect::<Result<_, _>>()?;
         self.stats = levels.iter().map(Level::stats).collect();
 
-        // A partial search: the box of the rows, which a particle outside reaches when
-        // its radius does (left empty when every row is searched, where it is not read).
-        let whole = rows.start == 0 && rows.end == n;
-        let empty = (V::splat(f64::INFINITY), V::splat(f64::NEG_INFINITY));
-        let (lo, hi) = if whole {
-            empty
-        } else {
-            positions[rows.clone()].iter().fold(empty, |(lo, hi), &x| {
-                (lo.component_min(x), hi.component_max(x))
-            })
-        };
-        let reaches = |i: usize| {
-            let d2: f64 = (0..V::DIM)
-                .map(|k| {
-                    let x = positions[i].component(k);
-                    let d = (lo.component(k) - x).max(x - hi.component(k)).max(0.0);
-                    d * d
-                })
-                .sum();
-            d2 < radius[i] * radius[i]
-        };
         // Gather: each chunk of rows is searched by one task and kept as it is (no
         // concatenation into one array, which would hold the indices twice at the peak),
         // with the pairs it found for the other side only.
@@ -205,7 +237,7 @@ impl CellList {
                 for i in range {
                     row.clear();
                     let own = rows.contains(&i);
-                    if own || (!whole && reaches(i)) {
+                    if own || (!whole && outside[i] == Outside::Reaches) {
                         let before = one_sided.len();
                         for (level, tested) in levels.iter().zip(&mut candidates) {
                             *tested += level.query(
@@ -251,6 +283,17 @@ impl CellList {
         self.candidates = self.stats.iter().map(|s| s.candidates).sum();
         Ok(NeighborList::from_chunks(transpose_one_sided(gathered, n)))
     }
+}
+
+/// Where a particle outside the rows of a partial search stands.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Outside {
+    /// It pairs with no row.
+    Away,
+    /// A row may reach it: it is gridded.
+    Halo,
+    /// Its own radius may reach a row: it is gridded and gathers.
+    Reaches,
 }
 
 /// What one chunk's gather produced.

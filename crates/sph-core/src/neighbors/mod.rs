@@ -11,13 +11,17 @@
 //! * [`NeighborList`]: the result in compressed sparse rows (CSR), each row sorted by
 //!   index, self excluded. Built in parallel with rayon, identical for any thread count.
 //! * [`brute_force_neighbors`]: the O(N²) reference used by the tests.
+//! * [`halo`]: which particles outside a domain of rows can pair with one inside it, from
+//!   the domain's block [`Region`]s: the ghost layer of a rank in a distributed run.
 
 mod criterion;
 mod grid;
+mod halo;
 mod list;
 
 pub use criterion::{PairCriterion, ScalarSupport, TensorSupport};
 pub use grid::{CellList, DEFAULT_CELL_FRACTION, DEFAULT_MAX_LEVELS, LevelStats};
+pub use halo::{Region, halo, regions_of_rows};
 pub use list::{NeighborList, Neighbors};
 
 use crate::error::CoreError;
