@@ -194,11 +194,11 @@ impl CellList {
                             continue;
                         }
                         for b in &regions[8 * g..(8 * g + 8).min(regions.len())] {
-                            let d = b.distance(x);
-                            if d < r {
+                            let d2 = b.distance_squared(x);
+                            if d2 < r * r {
                                 return Outside::Reaches;
                             }
-                            if d < b.reach {
+                            if d2 < b.reach * b.reach {
                                 found = Outside::Halo;
                             }
                         }

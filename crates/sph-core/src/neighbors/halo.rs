@@ -68,19 +68,28 @@ impl<V: Vector> Region<V> {
         }
     }
 
-    /// The Euclidean distance from `x` to the box (0 inside it).
-    pub fn distance(&self, x: V) -> f64 {
+    /// The squared Euclidean distance from `x` to the box (0 inside it), summed over
+    /// the axes in the order a vector's squared norm is: never above the squared
+    /// distance to a point inside the box, to the last bit.
+    pub fn distance_squared(&self, x: V) -> f64 {
         let outside = V::from_fn(|k| {
             let (c, lo, hi) = (x.component(k), self.lo.component(k), self.hi.component(k));
             (lo - c).max(c - hi).max(0.0)
         });
-        outside.norm()
+        outside.norm_squared()
+    }
+
+    /// The Euclidean distance from `x` to the box (0 inside it).
+    pub fn distance(&self, x: V) -> f64 {
+        self.distance_squared(x).sqrt()
     }
 
     /// Whether a particle at `x` with reach `radius` can pair with one of the region's
-    /// particles: closer to the box than the larger of the two reaches.
+    /// particles: closer to the box than the larger of the two reaches (compared squared,
+    /// as the pair criterion compares |r_ij|², so no pair is lost to rounding).
     pub fn may_pair(&self, x: V, radius: f64) -> bool {
-        self.distance(x) < radius.max(self.reach)
+        let reach = radius.max(self.reach);
+        self.distance_squared(x) < reach * reach
     }
 }
 
