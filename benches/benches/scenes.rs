@@ -21,7 +21,7 @@
 //! settings (`SchemeConfig::neighbour_search`).
 
 use sph_benches::{Counting, LIVE, PEAK, peak_rss};
-use sph_core::{CellList, NeighborSearch, ScalarSupport};
+use sph_core::{CellList, NeighborSearch, ScalarSupport, regions_of_rows};
 use sph_impact::Simulation;
 use sph_impact::scene::{Scene, SceneSimulation};
 use sph_impact::solver::{NeighbourSearch, shares};
@@ -284,12 +284,13 @@ fn halo_sizes<D: sph_core::Dimension>(sim: &Simulation<D, KernelChoice>) {
         list.mean_count()
     );
     println!(
-        "  domains | halo / own, mean | halo / own, largest | largest own × N/n | largest (own + halo) × N/n"
+        "  domains | halo / own, mean | halo / own, largest | largest own × N/n | largest (own + halo) × N/n | sent by the halo rule / halo, mean | largest"
     );
     for domains in [2usize, 4, 8, 16, 32, 64, 128, 256, 512, 1024] {
         // The ranks' rule for the pair blocks, applied to rows (`sph_impact::solver::shares`).
         let mut owner = vec![0; n];
-        for (d, rows) in shares(&cost, domains).into_iter().enumerate() {
+        let ranges = shares(&cost, domains);
+        for (d, rows) in ranges.iter().cloned().enumerate() {
             owner[rows].fill(d);
         }
         let mut own = vec![0usize; domains];
@@ -311,12 +312,31 @@ fn halo_sizes<D: sph_core::Dimension>(sim: &Simulation<D, KernelChoice>) {
             .map(|d| halo[d] as f64 / own[d].max(1) as f64)
             .collect();
         let per = n as f64 / domains as f64;
+        // What the rule of `sph_core::halo` would send each domain (boxes of runs of its
+        // rows, four reaches across, as the partial search uses), against the exact halo.
+        let sent: Vec<usize> = ranges
+            .iter()
+            .map(|own_rows| {
+                let regions =
+                    regions_of_rows(&p.position, &support, own_rows.clone(), 4.0).expect("regions");
+                let before = sph_core::halo(&regions, &p.position, &support, 0..own_rows.start)
+                    .expect("halo");
+                let after =
+                    sph_core::halo(&regions, &p.position, &support, own_rows.end..n).expect("halo");
+                before.len() + after.len()
+            })
+            .collect();
+        let excess: Vec<f64> = (0..domains)
+            .map(|d| sent[d] as f64 / halo[d].max(1) as f64)
+            .collect();
         println!(
-            "  {domains} | {:.3} | {:.3} | {:.2} | {:.2}",
+            "  {domains} | {:.3} | {:.3} | {:.2} | {:.2} | {:.2} | {:.2}",
             ratio.iter().sum::<f64>() / domains as f64,
             ratio.iter().cloned().fold(0.0, f64::max),
             *own.iter().max().unwrap() as f64 / per,
-            (0..domains).map(|d| own[d] + halo[d]).max().unwrap() as f64 / per
+            (0..domains).map(|d| own[d] + halo[d]).max().unwrap() as f64 / per,
+            excess.iter().sum::<f64>() / domains as f64,
+            excess.iter().cloned().fold(0.0, f64::max)
         );
     }
 }
