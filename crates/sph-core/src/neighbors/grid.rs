@@ -27,7 +27,7 @@
 //! keys searched by bisection, so memory stays O(N) for any point cloud.
 
 use super::criterion::check_inputs;
-use super::halo::{Region, regions_of_rows};
+use super::halo::{Region, regions_of};
 use super::list::{CHUNK, Chunk};
 use super::{NeighborList, NeighborSearch, PairCriterion};
 use crate::error::CoreError;
@@ -44,7 +44,7 @@ pub const DEFAULT_CELL_FRACTION: f64 = 0.5;
 const MAX_CELL_COORD: f64 = 1.0e15;
 
 /// The largest side of a box of a partial search's rows, in reaches of its particles
-/// (`regions_of_rows`): smaller boxes find a tighter halo, and each particle near the
+/// (`halo::regions_of_rows`): smaller boxes find a tighter halo, and each particle near the
 /// rows is tested against more of them.
 const HALO_REGION_SIZE: f64 = 4.0;
 
@@ -176,7 +176,7 @@ impl CellList {
         } else {
             // Two levels of boxes: a particle far from a group of eight regions tests
             // none of them.
-            let regions = regions_of_rows(positions, criterion, rows.clone(), HALO_REGION_SIZE)?;
+            let regions = regions_of(positions, criterion, rows.clone(), HALO_REGION_SIZE);
             let groups: Vec<Region<V>> = regions
                 .chunks(8)
                 .map(|c| c.iter().skip(1).fold(c[0], |u, b| u.union(b)))

@@ -114,6 +114,16 @@ pub fn regions_of_rows<V: Vector, C: PairCriterion<V>>(
             reason: "a region's size (in reaches) must be positive and finite",
         });
     }
+    Ok(regions_of(positions, criterion, rows, size))
+}
+
+/// [`regions_of_rows`] on inputs already checked (the partial search's).
+pub(super) fn regions_of<V: Vector, C: PairCriterion<V>>(
+    positions: &[V],
+    criterion: &C,
+    rows: Range<usize>,
+    size: f64,
+) -> Vec<Region<V>> {
     let mut regions = Vec::new();
     let mut current: Option<Region<V>> = None;
     for i in rows {
@@ -140,7 +150,7 @@ pub fn regions_of_rows<V: Vector, C: PairCriterion<V>>(
         };
     }
     regions.extend(current);
-    Ok(regions)
+    regions
 }
 
 /// The particles `candidates` (ascending) that can pair with a particle of a domain
