@@ -3,13 +3,13 @@
 //!
 //! MPI is called from the process' main thread only (MPI_THREAD_FUNNELED): the command
 //! runs on a thread of its own, and its collectives ([`Ranks::all_gather`],
-//! [`Ranks::broadcast`]) are handed to the main thread over a channel, which performs
+//! [`Ranks::broadcast`], [`Ranks::exchange`]) are handed to the main thread over a channel, which performs
 //! them and hands back the result. An error on any rank stops every rank (MPI_Abort)
 //! with that rank's message, so that no rank waits for one that has gone.
 
 use crate::cli::CommandError;
 use crate::solver::{Gathered, Ranks};
-use mpi::datatype::PartitionMut;
+use mpi::datatype::{Partition, PartitionMut};
 use mpi::topology::SimpleCommunicator;
 use mpi::traits::*;
 use std::sync::Mutex;
@@ -19,12 +19,14 @@ use std::sync::mpsc::{Receiver, Sender, channel};
 enum Request {
     AllGather(Vec<f64>),
     Broadcast(Vec<u8>),
+    Exchange(Vec<Vec<f64>>),
 }
 
 /// What the main thread hands back.
 enum Response {
     Gathered(Gathered),
     Broadcast(Vec<u8>),
+    Exchanged(Vec<Vec<f64>>),
 }
 
 /// This process' rank of the world, as the solver sees it: its collectives go to the
@@ -54,13 +56,20 @@ impl Ranks for WorldRank {
     fn all_gather(&self, own: Vec<f64>) -> Gathered {
         match self.ask(Request::AllGather(own)) {
             Response::Gathered(all) => all,
-            Response::Broadcast(_) => unreachable!("an all-gather answers an all-gather"),
+            _ => unreachable!("an all-gather answers an all-gather"),
         }
     }
     fn broadcast(&self, data: Vec<u8>) -> Vec<u8> {
         match self.ask(Request::Broadcast(data)) {
             Response::Broadcast(data) => data,
-            Response::Gathered(_) => unreachable!("a broadcast answers a broadcast"),
+            _ => unreachable!("a broadcast answers a broadcast"),
+        }
+    }
+    fn exchange(&self, to: Vec<Vec<f64>>) -> Vec<Vec<f64>> {
+        assert_eq!(to.len(), self.size, "one message per rank");
+        match self.ask(Request::Exchange(to)) {
+            Response::Exchanged(got) => got,
+            _ => unreachable!("an exchange answers an exchange"),
         }
     }
 }
@@ -98,6 +107,36 @@ fn serve(world: &SimpleCommunicator, request: Request) -> Response {
                 values: all,
                 lengths,
             })
+        }
+        Request::Exchange(to) => {
+            // The lengths first (MPI_Alltoall), then the values (MPI_Alltoallv).
+            let size = world.size() as usize;
+            let sent: Vec<u64> = to.iter().map(|m| m.len() as u64).collect();
+            let mut got = vec![0_u64; size];
+            world.all_to_all_into(&sent[..], &mut got[..]);
+            let sent: Vec<usize> = sent.iter().map(|&n| n as usize).collect();
+            let got: Vec<usize> = got.iter().map(|&n| n as usize).collect();
+            let (send_counts, send_displs) = counts_of(&sent);
+            let (recv_counts, recv_displs) = counts_of(&got);
+            // Never an empty buffer: MPI refuses its (dangling) address.
+            let mut send = to.concat();
+            send.resize(send.len().max(1), 0.0);
+            let total: usize = got.iter().sum();
+            let mut all = vec![0.0_f64; total.max(1)];
+            {
+                let out = Partition::new(&send[..], send_counts, &send_displs[..]);
+                let mut back = PartitionMut::new(&mut all[..], recv_counts, &recv_displs[..]);
+                world.all_to_all_varcount_into(&out, &mut back);
+            }
+            let mut at = 0;
+            Response::Exchanged(
+                got.iter()
+                    .map(|&n| {
+                        at += n;
+                        all[at - n..at].to_vec()
+                    })
+                    .collect(),
+            )
         }
         Request::Broadcast(mut data) => {
             let root = world.process_at_rank(0);

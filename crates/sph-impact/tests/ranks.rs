@@ -161,6 +161,87 @@ fn ranks_give_the_bits_of_one_process_in_every_geometry() {
             println!("{name}: {n} particles, {size} ranks: the same bits");
         }
     }
+    // Mirror planes: the pairs of a rank's rows read the gradients of the ghosts'
+    // sources, which may belong to another rank (its halo).
+    let n = check(&common::quarter_smoke_text(), 3, 6);
+    println!("the quarter smoke scene: {n} particles, 3 ranks: the same bits");
+}
+
+/// A periodic pair of faces: the ghosts by the face x = 0 copy particles by x = 1, which
+/// another rank owns and no row of this rank lists, so a rank's halo must hold the
+/// ghosts' sources (solver/ranks/halo.rs).
+#[test]
+fn ranks_give_the_bits_of_one_process_across_a_periodic_boundary() {
+    use sph_core::glam::DVec2;
+    use sph_core::{Dim2, ParticleInit, Particles};
+    use sph_impact::{Boundary, Material, SchemeConfig};
+    let build = || {
+        let mut p = Particles::<Dim2>::new();
+        let n = 24;
+        let dx = 1.0 / n as f64;
+        // x-major, so that three ranks' rows are three slabs across x.
+        for a in 0..n {
+            for b in 0..n {
+                let s = ((a * 7 + b * 13) % 11) as f64 / 11.0;
+                p.push(ParticleInit {
+                    position: DVec2::new((a as f64 + 0.5) * dx, (b as f64 + 0.5) * dx),
+                    velocity: DVec2::new(0.3 * (s - 0.5), 0.2 * ((a + b) % 3) as f64 - 0.2),
+                    mass: dx * dx * (1.0 + 0.5 * s),
+                    density: 1.0 + 0.5 * s,
+                    specific_energy: 1.0 + s,
+                    smoothing_length: 2.5 * dx,
+                    material: 0,
+                });
+            }
+        }
+        let gas = sph_eos::IdealGas::with_gamma(1.4).unwrap();
+        Simulation::new(
+            p,
+            vec![Material::fluid("gas", gas)],
+            SchemeConfig::default(),
+            KernelChoice::WendlandC2,
+            vec![
+                Boundary::Wall {
+                    point: DVec2::ZERO,
+                    normal: DVec2::Y,
+                },
+                Boundary::Periodic {
+                    axis: 0,
+                    lo: 0.0,
+                    hi: 1.0,
+                },
+            ],
+            None,
+        )
+        .unwrap()
+    };
+    for size in [2, 3] {
+        compare(&mut build(), &build, size, 6);
+    }
+}
+
+/// The personalised exchange (`Ranks::exchange`, here its default through the
+/// all-gather): each rank receives exactly what each rank addressed to it, empty
+/// messages included.
+#[test]
+fn an_exchange_delivers_each_message_to_its_rank() {
+    let size = 4;
+    let hub = Hub::new(size);
+    // Rank r sends rank k the values 100 r + k, (r + k) % 3 times.
+    let message = |r: usize, k: usize| vec![(100 * r + k) as f64; (r + k) % 3];
+    std::thread::scope(|scope| {
+        for rank in 0..size {
+            let hub = &hub;
+            scope.spawn(move || {
+                let ranks = ThreadRank { rank, size, hub };
+                for _ in 0..2 {
+                    let got = ranks.exchange((0..size).map(|k| message(rank, k)).collect());
+                    let expected: Vec<Vec<f64>> = (0..size).map(|r| message(r, rank)).collect();
+                    assert_eq!(got, expected, "rank {rank}");
+                }
+            });
+        }
+    });
 }
 
 /// The schemes whose pair passes gather more: the FSISPH preset (gradient corrections

@@ -4,15 +4,21 @@
 //! passes, which are most of a step, are shared out. Their rows come in fixed blocks
 //! (pair_blocks.rs); each rank takes a contiguous range of blocks, balanced by the
 //! neighbour count of their rows (a pair's cost), sums its blocks as a single process
-//! would, and the ranks then gather each other's rows. A block's sums do not depend on
-//! which rank adds them, so a run gives the same bits on any number of ranks and
-//! threads, and a checkpoint written on some number of ranks resumes on any other.
+//! would, and the ranks then share what the others read: after pass 1, each rank
+//! receives the gradients of the rows its own rows' pairs read (its [`Halo`]) and every
+//! rank's strain-rate gradient, which the stress update reads for every particle; after
+//! pass 2, every rank's rates. A block's sums do not depend on which rank adds them, so
+//! a run gives the same bits on any number of ranks and threads, and a checkpoint
+//! written on some number of ranks resumes on any other.
 //!
 //! The state is replicated, not distributed: memory per rank is that of one process,
 //! and the neighbour search, the EOS and the integration run on every rank.
 
 use sph_core::{Dimension, Tensor, Vector};
 use std::ops::Range;
+
+mod halo;
+pub(crate) use halo::{Halo, rows_read};
 
 /// The ranks of a run, as the solver sees them: who this is, how many there are, and the
 /// two collectives it needs. Implemented over MPI by the program (`mpi` feature) and by
@@ -26,6 +32,29 @@ pub trait Ranks: Sync {
     fn all_gather(&self, own: Vec<f64>) -> Gathered;
     /// Rank 0's `data` on every rank (what the others pass is ignored).
     fn broadcast(&self, data: Vec<u8>) -> Vec<u8>;
+    /// Sends `to[k]` to each rank k and returns what each rank sent this one, in rank
+    /// order (a personalised all-to-all; `to` has [`Ranks::size`] entries, this rank's
+    /// own included). The default goes through [`Ranks::all_gather`], so every rank
+    /// receives every message: correct, but with the traffic of a gather. The MPI
+    /// transport sends each rank only its own (MPI_Alltoallv).
+    fn exchange(&self, to: Vec<Vec<f64>>) -> Vec<Vec<f64>> {
+        assert_eq!(to.len(), self.size(), "one message per rank");
+        // Each rank's part: the lengths of its messages, then the messages.
+        let mut own: Vec<f64> = to.iter().map(|m| m.len() as f64).collect();
+        for m in &to {
+            own.extend_from_slice(m);
+        }
+        let all = self.all_gather(own);
+        let (me, size) = (self.rank(), self.size());
+        (0..size)
+            .map(|k| {
+                let part = all.part(k);
+                let before: usize = part[..me].iter().map(|&n| n as usize).sum();
+                let start = size + before;
+                part[start..start + part[me] as usize].to_vec()
+            })
+            .collect()
+    }
 }
 
 /// The values of an all-gather: every rank's, one after the other in rank order.
@@ -156,33 +185,18 @@ pub(crate) const fn tensor_len<D: Dimension>() -> usize {
 /// Gathers the rows `rows[k]` of `data` from each rank k into every rank's `data` (this
 /// rank's own rows are left as they are).
 pub(crate) fn gather_rows<T: Flat>(ranks: &dyn Ranks, data: &mut [T], rows: &[Range<usize>]) {
-    gather_rows_by(ranks, data, rows, T::LEN, T::put, T::get);
+    gather_rows_by(ranks, data, rows, T::LEN, T::put, |x, v| *x = T::get(v));
 }
 
-/// [`gather_rows`] of tensors of dimension `D` (M⁻ᵀ of the gradient corrections).
-pub(crate) fn gather_tensor_rows<D: Dimension>(
-    ranks: &dyn Ranks,
-    data: &mut [D::Tensor],
-    rows: &[Range<usize>],
-) {
-    gather_rows_by(
-        ranks,
-        data,
-        rows,
-        tensor_len::<D>(),
-        put_tensor,
-        get_tensor::<D::Tensor>,
-    );
-}
-
-/// [`gather_rows`] with the value's `len` f64s written by `put` and read by `get`.
-fn gather_rows_by<T>(
+/// [`gather_rows`] of `len` f64s of each value, written by `put` and stored back into
+/// the value by `set` (which may set only some of its fields).
+pub(crate) fn gather_rows_by<T>(
     ranks: &dyn Ranks,
     data: &mut [T],
     rows: &[Range<usize>],
     len: usize,
     put: impl Fn(&T, &mut Vec<f64>),
-    get: impl Fn(&[f64]) -> T,
+    set: impl Fn(&mut T, &[f64]),
 ) {
     let me = ranks.rank();
     let mut own = Vec::with_capacity(rows[me].len() * len);
@@ -203,7 +217,7 @@ fn gather_rows_by<T>(
             .iter_mut()
             .zip(theirs.chunks_exact(len))
         {
-            *x = get(v);
+            set(x, v);
         }
     }
 }

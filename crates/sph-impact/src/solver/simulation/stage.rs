@@ -56,10 +56,43 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
         if size > 1
             && let Some(g) = &mut g
         {
-            ranks::gather_rows(ranks, &mut g.each, &rows_of);
+            // Pass 2 reads the gradients of the particles its rows list (and of the
+            // ghosts' sources): this rank's halo, asked of their owners.
+            let read = ranks::rows_read(list, &ext.source, rows_of[ranks.rank()].clone(), n);
+            let halo = ranks::Halo::new(ranks, &read, &rows_of);
+            halo.fill(ranks, &mut g.each);
             if !g.correction.is_empty() {
-                ranks::gather_tensor_rows::<D>(ranks, &mut g.correction, &rows_of);
+                halo.fill_by(
+                    ranks,
+                    &mut g.correction,
+                    ranks::tensor_len::<D>(),
+                    ranks::put_tensor,
+                    ranks::get_tensor::<D::Tensor>,
+                );
             }
+            // Every rank's per-particle work reads every particle's strain-rate
+            // gradient (the stress update, the viscosity switch, the tensor damage's
+            // spin) and, with ASPH, ∇v (the smoothing tensor's evolution).
+            let asph = !ext.h_tensor.is_empty();
+            let t = ranks::tensor_len::<D>();
+            ranks::gather_rows_by(
+                ranks,
+                &mut g.each,
+                &rows_of,
+                if asph { 2 * t } else { t },
+                |x, out| {
+                    ranks::put_tensor(&x.strain_velocity, out);
+                    if asph {
+                        ranks::put_tensor(&x.velocity, out);
+                    }
+                },
+                |x, v| {
+                    x.strain_velocity = ranks::get_tensor(v);
+                    if asph {
+                        x.velocity = ranks::get_tensor(&v[t..]);
+                    }
+                },
+            );
         }
         let t3 = Instant::now();
         let exchange_gradients = (t3 - t).as_secs_f64();
