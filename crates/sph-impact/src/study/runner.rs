@@ -101,6 +101,7 @@ pub fn run_study(
         )));
     }
     let mut pending = Vec::new();
+    let mut before = Before::default();
     for point in &points {
         if options.only.is_some_and(|k| k != point.index) {
             continue;
@@ -109,13 +110,19 @@ pub fn run_study(
         let pdir = point_dir(dir, point.index);
         check_stored_scene(&pdir, &scene, point)?;
         match read_record(&pdir)? {
-            Some(r) if r.status == PointStatus::Done => {}
-            Some(r) if r.status == PointStatus::Failed && !options.retry_failed => {}
+            Some(r) if r.status == PointStatus::Done => before.done += 1,
+            Some(r) if r.status == PointStatus::Failed && !options.retry_failed => {
+                before.failed += 1
+            }
             _ => pending.push((point.clone(), scene)),
         }
     }
     if let Some(n) = options.max_points {
+        before.later = pending.len().saturating_sub(n);
         pending.truncate(n);
+    }
+    if !options.quiet {
+        eprintln!("{}", before.announce(pending.len(), points.len()));
     }
     let progress = Progress::new(options.quiet, pending.len(), points.len());
     let next = AtomicUsize::new(0);
@@ -288,6 +295,40 @@ pub(crate) fn write_whole(path: &Path, bytes: &[u8]) -> Result<(), StudyError> {
     crate::run::atomic::write_bytes(path, bytes).map_err(|e| StudyError::failed(e.to_string()))
 }
 
+/// What a study's points were when it started: finished by an earlier run, failed in
+/// one (and not retried), left for a later run (`--max-points`, `--collect`).
+#[derive(Clone, Copy, Debug, Default)]
+struct Before {
+    done: usize,
+    failed: usize,
+    later: usize,
+}
+
+impl Before {
+    /// The line that opens the study's progress: how many of its `total` points it runs
+    /// now (`to_run`) and why the others are not run.
+    fn announce(&self, to_run: usize, total: usize) -> String {
+        let mut why = vec![format!("{} finished before", self.done)];
+        if self.failed > 0 {
+            why.push(format!(
+                "{} failed before, run again with --retry-failed",
+                self.failed
+            ));
+        }
+        if self.later > 0 {
+            why.push(format!("{} left for a later run", self.later));
+        }
+        let others = total - to_run - self.done - self.failed - self.later;
+        if others > 0 {
+            why.push(format!("{others} not this task's (--point)"));
+        }
+        format!(
+            "study: {to_run} of {total} points to run ({})",
+            why.join(", ")
+        )
+    }
+}
+
 /// The study's progress on standard error: a bar over its points (ended of those to run,
 /// failed, running, the time left from the time per point finished so far). On
 /// a terminal the bar is redrawn in place and a failed point's error is printed above it;
@@ -304,12 +345,6 @@ struct Progress {
 
 impl Progress {
     fn new(quiet: bool, to_run: usize, total: usize) -> Self {
-        if !quiet {
-            eprintln!(
-                "study: {to_run} of {total} points to run ({} finished before)",
-                total - to_run
-            );
-        }
         Self {
             quiet,
             terminal: std::io::stderr().is_terminal(),
@@ -411,6 +446,35 @@ impl Progress {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_opening_line_says_why_points_are_not_run() {
+        let fresh = Before::default();
+        assert_eq!(
+            fresh.announce(3, 3),
+            "study: 3 of 3 points to run (0 finished before)"
+        );
+        // `--max-points 0` on a fresh study (`--collect`): nothing finished.
+        assert_eq!(
+            Before { later: 3, ..fresh }.announce(0, 3),
+            "study: 0 of 3 points to run (0 finished before, 3 left for a later run)"
+        );
+        assert_eq!(
+            Before {
+                done: 4,
+                failed: 1,
+                later: 2
+            }
+            .announce(3, 10),
+            "study: 3 of 10 points to run (4 finished before, 1 failed before, run again with \
+             --retry-failed, 2 left for a later run)"
+        );
+        // `--point 2` of five, not run before.
+        assert_eq!(
+            fresh.announce(1, 5),
+            "study: 1 of 5 points to run (0 finished before, 4 not this task's (--point))"
+        );
+    }
 
     #[test]
     fn the_study_bar_counts_points_ended_failed_and_running() {
