@@ -172,45 +172,16 @@ fn ranks_give_the_bits_of_one_process_in_every_geometry() {
 /// ghosts' sources (solver/ranks/halo.rs).
 #[test]
 fn ranks_give_the_bits_of_one_process_across_a_periodic_boundary() {
-    use sph_core::glam::DVec2;
-    use sph_core::{Dim2, ParticleInit, Particles};
-    use sph_impact::{Boundary, Material, SchemeConfig};
+    use sph_impact::{Material, SchemeConfig};
     let build = || {
-        let mut p = Particles::<Dim2>::new();
-        let n = 24;
-        let dx = 1.0 / n as f64;
-        // x-major, so that three ranks' rows are three slabs across x.
-        for a in 0..n {
-            for b in 0..n {
-                let s = ((a * 7 + b * 13) % 11) as f64 / 11.0;
-                p.push(ParticleInit {
-                    position: DVec2::new((a as f64 + 0.5) * dx, (b as f64 + 0.5) * dx),
-                    velocity: DVec2::new(0.3 * (s - 0.5), 0.2 * ((a + b) % 3) as f64 - 0.2),
-                    mass: dx * dx * (1.0 + 0.5 * s),
-                    density: 1.0 + 0.5 * s,
-                    specific_energy: 1.0 + s,
-                    smoothing_length: 2.5 * dx,
-                    material: 0,
-                });
-            }
-        }
+        let (p, boundaries) = common::gas_blob(true);
         let gas = sph_eos::IdealGas::with_gamma(1.4).unwrap();
         Simulation::new(
             p,
             vec![Material::fluid("gas", gas)],
             SchemeConfig::default(),
             KernelChoice::WendlandC2,
-            vec![
-                Boundary::Wall {
-                    point: DVec2::ZERO,
-                    normal: DVec2::Y,
-                },
-                Boundary::Periodic {
-                    axis: 0,
-                    lo: 0.0,
-                    hi: 1.0,
-                },
-            ],
+            boundaries,
             None,
         )
         .unwrap()

@@ -9,6 +9,8 @@ use sph_impact::{Boundary, Material, SchemeConfig, Simulation};
 use sph_kernel::WendlandC2;
 use sph_riemann::{MonaghanViscosity, ViscositySwitch};
 
+mod common;
+
 /// A 2-D blob of gas with scattered pressures and velocities, free surface and (when
 /// `walls`) one reflecting wall and a periodic pair.
 fn blob(walls: bool) -> Simulation<Dim2, WendlandC2> {
@@ -16,39 +18,7 @@ fn blob(walls: bool) -> Simulation<Dim2, WendlandC2> {
 }
 
 fn blob_with(walls: bool, scheme: SchemeConfig) -> Simulation<Dim2, WendlandC2> {
-    let mut p = Particles::<Dim2>::new();
-    let n = 24;
-    let dx = 1.0 / n as f64;
-    for a in 0..n {
-        for b in 0..n {
-            let x = DVec2::new((a as f64 + 0.5) * dx, (b as f64 + 0.5) * dx);
-            let s = ((a * 7 + b * 13) % 11) as f64 / 11.0;
-            p.push(ParticleInit {
-                position: x,
-                velocity: DVec2::new(0.3 * (s - 0.5), 0.2 * ((a + b) % 3) as f64 - 0.2),
-                mass: dx * dx * (1.0 + 0.5 * s),
-                density: 1.0 + 0.5 * s,
-                specific_energy: 1.0 + s,
-                smoothing_length: 2.5 * dx,
-                material: 0,
-            });
-        }
-    }
-    let boundaries = if walls {
-        vec![
-            Boundary::Wall {
-                point: DVec2::ZERO,
-                normal: DVec2::Y,
-            },
-            Boundary::Periodic {
-                axis: 0,
-                lo: 0.0,
-                hi: 1.0,
-            },
-        ]
-    } else {
-        Vec::new()
-    };
+    let (p, boundaries) = common::gas_blob(walls);
     Simulation::new(
         p,
         vec![Material::fluid("gas", IdealGas::with_gamma(1.4).unwrap())],

@@ -1,6 +1,7 @@
 //! What the tests that compare two runs of one scene share: the bundled scenes' text,
 //! extra `[solver]` keys, the field-by-field gap between two simulations, and stepping a
-//! pair of built simulations of any geometry, and the 3-D quarter smoke scene.
+//! pair of built simulations of any geometry, the 3-D quarter smoke scene, and a 2-D gas
+//! blob with a wall and a periodic pair.
 
 // Each test file uses a part of this module.
 #![allow(dead_code)]
@@ -128,4 +129,52 @@ macro_rules! on_both {
             _ => unreachable!("one scene builds one geometry"),
         }
     };
+}
+
+/// A 24 × 24 lattice of gas particles in the unit square with scattered pressures and
+/// velocities, x-major (so that ranks' rows are slabs across x), and, when `walls`, a
+/// reflecting wall at y = 0 and a periodic pair of faces in x.
+pub fn gas_blob(
+    walls: bool,
+) -> (
+    sph_core::Particles<sph_core::Dim2>,
+    Vec<sph_impact::Boundary<sph_core::Dim2>>,
+) {
+    use sph_core::glam::DVec2;
+    use sph_core::{ParticleInit, Particles};
+    use sph_impact::Boundary;
+    let mut p = Particles::new();
+    let n = 24;
+    let dx = 1.0 / n as f64;
+    for a in 0..n {
+        for b in 0..n {
+            let x = DVec2::new((a as f64 + 0.5) * dx, (b as f64 + 0.5) * dx);
+            let s = ((a * 7 + b * 13) % 11) as f64 / 11.0;
+            p.push(ParticleInit {
+                position: x,
+                velocity: DVec2::new(0.3 * (s - 0.5), 0.2 * ((a + b) % 3) as f64 - 0.2),
+                mass: dx * dx * (1.0 + 0.5 * s),
+                density: 1.0 + 0.5 * s,
+                specific_energy: 1.0 + s,
+                smoothing_length: 2.5 * dx,
+                material: 0,
+            });
+        }
+    }
+    let boundaries = if walls {
+        vec![
+            Boundary::Wall {
+                point: DVec2::ZERO,
+                normal: DVec2::Y,
+            },
+            Boundary::Periodic {
+                axis: 0,
+                lo: 0.0,
+                hi: 1.0,
+            },
+        ]
+    } else {
+        Vec::new()
+    };
+    (p, boundaries)
 }

@@ -305,16 +305,20 @@ fn gradients_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
 /// symmetric part below 100), else None.
 fn well_conditioned_inverse<T: Tensor>(m: &T) -> Option<T> {
     let s = m.symmetric();
-    if gershgorin_well_conditioned(&s) {
-        return m.inverse();
+    if gershgorin_well_conditioned(&s) || eigenvalues_well_conditioned(&s) {
+        m.inverse()
+    } else {
+        None
     }
+}
+
+/// Whether the symmetric `s` has eigenvalues 0 < λ_min and λ_max ≤ 100 λ_min, written as
+/// the refusal it has always been (so a NaN λ_max is not refused, as before).
+fn eigenvalues_well_conditioned<T: Tensor>(s: &T) -> bool {
     let values = s.sym_eigenvalues();
-    let n = T::Vector::DIM;
-    let (lo, hi) = (values[0], values[n - 1]);
-    if !(lo > 0.0) || hi > 100.0 * lo {
-        return None;
-    }
-    m.inverse()
+    let (lo, hi) = (values[0], values[T::Vector::DIM - 1]);
+    let refused = !(lo > 0.0) || hi > 100.0 * lo;
+    !refused
 }
 
 /// Whether Gershgorin's discs alone show the symmetric `s` well conditioned: every
@@ -348,13 +352,11 @@ mod tests {
 
     /// The decision from the eigenvalues alone, as before the Gershgorin test.
     fn by_eigenvalues<T: Tensor>(m: &T) -> Option<T> {
-        let values = m.symmetric().sym_eigenvalues();
-        let n = T::Vector::DIM;
-        let (lo, hi) = (values[0], values[n - 1]);
-        if !(lo > 0.0) || hi > 100.0 * lo {
-            return None;
+        if eigenvalues_well_conditioned(&m.symmetric()) {
+            m.inverse()
+        } else {
+            None
         }
-        m.inverse()
     }
 
     proptest! {
