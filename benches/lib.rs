@@ -74,6 +74,25 @@ unsafe impl GlobalAlloc for Counting {
     }
 }
 
+/// Keeps the memory a stage frees for the next one, as the `sph-impact` program does at
+/// its start (its `keep_freed_memory`, src/bin/sph-impact.rs, says why): glibc's mmap
+/// threshold at its largest, 32 MiB, and the heap's top never trimmed. Call it first in
+/// a bench's main, before any thread starts.
+#[cfg(all(target_os = "linux", target_env = "gnu"))]
+#[allow(unsafe_code)]
+pub fn keep_freed_memory() {
+    // SAFETY: mallopt only sets two allocator parameters, before other threads exist;
+    // glibc refuses (returning 0) values out of its ranges, leaving its defaults.
+    unsafe {
+        libc::mallopt(libc::M_MMAP_THRESHOLD, 32 << 20);
+        libc::mallopt(libc::M_TRIM_THRESHOLD, i32::MAX);
+    }
+}
+
+/// Other systems keep their allocator's defaults.
+#[cfg(not(all(target_os = "linux", target_env = "gnu")))]
+pub fn keep_freed_memory() {}
+
 /// Peak resident set size (bytes) of this process so far, from /proc (Linux); 0 elsewhere.
 pub fn peak_rss() -> f64 {
     std::fs::read_to_string("/proc/self/status")

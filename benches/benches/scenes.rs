@@ -15,7 +15,12 @@
 //! cargo bench -p sph-benches --bench scenes -- rz --each-step # one search per RK2 step
 //! cargo bench -p sph-benches --bench scenes -- 3d --halo    # domains' ghost layers, no steps
 //! cargo bench -p sph-benches --bench scenes -- 3d --halo --study-resolution # at A_res 0.5 mm
+//! cargo bench -p sph-benches --bench scenes -- rz --allocator-defaults # glibc's own settings
 //! ```
+//!
+//! The allocator is set as the `sph-impact` program sets it (freed memory kept for the
+//! next stage, `sph_benches::keep_freed_memory`); `--allocator-defaults` leaves glibc's
+//! defaults, to measure what that gives.
 //!
 //! `--each-step` sets `[solver] neighbour_search = "each-step"` over the scene's own
 //! settings (`SchemeConfig::neighbour_search`).
@@ -359,6 +364,12 @@ fn halo_only(case: &Case) {
 
 fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();
+    // The allocator set as the program sets it, unless `--allocator-defaults` asks for
+    // glibc's defaults (to measure what the setting gives, docs/performance.md).
+    let allocator_defaults = args.iter().any(|a| a == "--allocator-defaults");
+    if !allocator_defaults {
+        sph_benches::keep_freed_memory();
+    }
     let halo = args.iter().any(|a| a == "--halo");
     let quick = args.iter().any(|a| a == "--quick");
     let search = args.iter().any(|a| a == "--search");

@@ -176,6 +176,46 @@ fn tick_labels_have_no_negative_zero() {
 // ---------------------------------------------------------------- rasterisation
 
 #[test]
+fn placed_x_ticks_replace_the_nice_steps_and_thin_where_labels_crowd() {
+    let bars = |n: usize, width: u32| {
+        let mut fig = Figure::new(width, 300);
+        let ax = fig.panel(0, 0, 1, 1).unwrap();
+        let ticks: Vec<(f64, String)> = (0..n).map(|k| (k as f64, format!("{}", 10 + k))).collect();
+        ax.xticks(&ticks).unwrap();
+        for k in 0..n {
+            let x = k as f64;
+            ax.bars(&[x - 0.35, x + 0.35], &[1.0 + x], Style::bars(BLUE))
+                .unwrap();
+        }
+        fig.render().unwrap().1.panels[0].x_ticks.clone()
+    };
+    // Three bars: a tick under each, with the caller's labels (nice steps would
+    // label 0, 0.5, 1, 1.5, 2).
+    assert_eq!(bars(3, 400), ["10", "11", "12"]);
+    // Forty bars in a narrow panel: every 2^k-th label, starting from the first.
+    let thinned = bars(40, 300);
+    assert!(thinned.len() < 40 && thinned.len() >= 2, "{thinned:?}");
+    let stride: usize = thinned[1].parse::<usize>().unwrap() - 10;
+    assert!(stride.is_power_of_two() && stride > 1, "{thinned:?}");
+    assert_eq!(thinned[0], "10");
+    // Unusable ticks are refused.
+    let mut fig = Figure::new(300, 300);
+    let ax = fig.panel(0, 0, 1, 1).unwrap();
+    let e = ax
+        .xticks(&[(1.0, "a".into()), (1.0, "b".into())])
+        .unwrap_err();
+    assert!(
+        matches!(e, PlotError::BadParameter { what: "x tick", .. }),
+        "{e}"
+    );
+    let e = ax.xticks(&[(f64::NAN, "a".into())]).unwrap_err();
+    assert!(
+        matches!(e, PlotError::BadParameter { what: "x tick", .. }),
+        "{e}"
+    );
+}
+
+#[test]
 fn diagonal_line_colours_the_pixels_it_crosses() {
     let (w, h) = (100u32, 80u32);
     for aa in [false, true] {

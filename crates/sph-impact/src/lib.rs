@@ -62,7 +62,10 @@
 //! ```
 //!
 //! ## Feature flags
-//! None.
+//! - `mpi` (off by default): one run over several MPI ranks (`mpirun -n N sph-impact run
+//!   SCENE`; docs/mpi.md). Needs an MPI implementation and libclang (.ci/install-mpi).
+
+#![forbid(unsafe_code)]
 
 pub mod cli;
 pub mod input;

@@ -5,6 +5,7 @@ use super::histogram::{Binned, bin};
 use super::scale::Scale;
 use super::series::{ColorScale, Kind, PointCount, Series};
 use super::style::Style;
+use super::ticks::Tick;
 
 /// Where the legend goes inside the plot area.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
@@ -40,6 +41,8 @@ pub struct Axes {
     pub(crate) no_grid: bool,
     pub(crate) legend: LegendPos,
     pub(crate) equal_aspect: bool,
+    /// Ticks placed by the caller on x (`xticks`), instead of the nice steps.
+    pub(crate) xticks: Option<Vec<Tick>>,
     pub(crate) series: Vec<Series>,
 }
 
@@ -100,6 +103,38 @@ impl Axes {
     pub fn ylim(&mut self, lo: f64, hi: f64) -> Result<&mut Self, PlotError> {
         check_limits("y", lo, hi)?;
         self.ylim = Some((lo, hi));
+        Ok(self)
+    }
+
+    /// Places the x ticks at `ticks` (value, label), instead of at nice steps: for an
+    /// axis of categories, such as the points of a study drawn as bars at 0, 1, 2, …
+    /// The values must be finite and increasing; those outside the axis range are not
+    /// drawn, and where the labels would overlap every second one is dropped, then every
+    /// fourth, as often as needed.
+    pub fn xticks(&mut self, ticks: &[(f64, String)]) -> Result<&mut Self, PlotError> {
+        if let Some(&(v, _)) = ticks.iter().find(|(v, _)| !v.is_finite()) {
+            return Err(PlotError::BadParameter {
+                what: "x tick",
+                value: v,
+                reason: "must be finite",
+            });
+        }
+        if let Some(w) = ticks.windows(2).find(|w| !(w[1].0 > w[0].0)) {
+            return Err(PlotError::BadParameter {
+                what: "x tick",
+                value: w[1].0,
+                reason: "must be greater than the tick before it",
+            });
+        }
+        self.xticks = Some(
+            ticks
+                .iter()
+                .map(|(value, label)| Tick {
+                    value: *value,
+                    label: label.clone(),
+                })
+                .collect(),
+        );
         Ok(self)
     }
 

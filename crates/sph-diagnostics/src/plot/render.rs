@@ -18,7 +18,7 @@ use super::report::PanelReport;
 use super::scale::{AxisMap, Scale};
 use super::series::Kind;
 use super::text::{HAlign, TextStyle, VAlign};
-use super::ticks::TickSet;
+use super::ticks::{Tick, TickSet};
 
 /// Outer padding of a panel, pixels.
 const PAD: i64 = 10;
@@ -50,6 +50,33 @@ fn x_labels_fit(ticks: &TickSet, map: &AxisMap, scale: u32, min_gap: f64) -> boo
             * (font::text_width(&w[0].label, scale) + font::text_width(&w[1].label, scale)) as f64;
         (b - a).abs() >= half + min_gap
     })
+}
+
+/// The caller's ticks (`Axes::xticks`) within [lo, hi], every 2^k-th one kept for the
+/// smallest k whose labels keep `min_gap` pixels apart (the first tick always kept).
+fn placed_ticks(
+    ticks: &[Tick],
+    (lo, hi): (f64, f64),
+    map: &AxisMap,
+    scale: u32,
+    min_gap: f64,
+) -> TickSet {
+    let inside: Vec<Tick> = ticks
+        .iter()
+        .filter(|t| t.value >= lo && t.value <= hi)
+        .cloned()
+        .collect();
+    let mut stride = 1;
+    loop {
+        let set = TickSet {
+            major: inside.iter().step_by(stride).cloned().collect(),
+            minor: Vec::new(),
+        };
+        if set.major.len() <= 1 || x_labels_fit(&set, map, scale, min_gap) {
+            return set;
+        }
+        stride *= 2;
+    }
 }
 
 /// Draws `ax` inside `area` of `canvas` with text at integer `scale`.
@@ -133,11 +160,18 @@ pub(crate) fn panel(
 
     // Start from a tick per 6 characters and thin until the labels keep 2 characters apart.
     let mut x_max = ((plot.width() / (6 * s * font::ADVANCE as i64)) as usize).clamp(2, 12);
-    let mut xt = tick_set(ax.xscale, xl, x_max);
-    while x_max > 2 && !x_labels_fit(&xt, &xm, scale, 2.0 * font::ADVANCE as f64 * s as f64) {
-        x_max -= 1;
-        xt = tick_set(ax.xscale, xl, x_max);
-    }
+    let min_gap = 2.0 * font::ADVANCE as f64 * s as f64;
+    let xt = match &ax.xticks {
+        Some(ticks) => placed_ticks(ticks, xl, &xm, scale, min_gap),
+        None => {
+            let mut xt = tick_set(ax.xscale, xl, x_max);
+            while x_max > 2 && !x_labels_fit(&xt, &xm, scale, min_gap) {
+                x_max -= 1;
+                xt = tick_set(ax.xscale, xl, x_max);
+            }
+            xt
+        }
+    };
 
     // Grid.
     if !ax.no_grid {
@@ -251,5 +285,10 @@ pub(crate) fn panel(
     if let (Some((cs, range)), Some(t)) = (cbar, &cbar_ticks) {
         colorbar::draw(canvas, plot, cs, range, t, scale);
     }
-    Ok(PanelReport { row, col, series })
+    Ok(PanelReport {
+        row,
+        col,
+        series,
+        x_ticks: xt.major.iter().map(|t| t.label.clone()).collect(),
+    })
 }

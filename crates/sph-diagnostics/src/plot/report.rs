@@ -34,6 +34,8 @@ pub struct PanelReport {
     pub col: usize,
     /// One entry per series, in the order added.
     pub series: Vec<SeriesReport>,
+    /// The labels of the x ticks drawn, left to right.
+    pub x_ticks: Vec<String>,
 }
 
 /// Accounting of a rendered figure.

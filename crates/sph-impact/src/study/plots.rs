@@ -95,6 +95,16 @@ fn categories(
     k: usize,
     dir: &Path,
 ) -> Result<PathBuf, StudyError> {
+    let fig = categories_figure(table, done, k)?;
+    save_plot(&fig, dir, &table.parameters[k])
+}
+
+/// The figure of [`categories`].
+fn categories_figure(
+    table: &StudyTable,
+    done: &[&crate::study::table::PointRow],
+    k: usize,
+) -> Result<Figure, StudyError> {
     let parameter = &table.parameters[k];
     let fallback = format!("study: the metrics for each {parameter}");
     let (mut fig, cols, rows) = panel_grid(table.metrics.len(), &table.description, fallback);
@@ -105,6 +115,14 @@ fn categories(
         ax.title(metric.clone())
             .xlabel(format!("point ({})", short(parameter)))
             .ylabel(metric.clone());
+        // A tick under each bar, labelled with its point's number (nice steps would
+        // put fractional point numbers between the bars).
+        let ticks: Vec<(f64, String)> = done
+            .iter()
+            .enumerate()
+            .map(|(n, row)| (n as f64, row.index.to_string()))
+            .collect();
+        ax.xticks(&ticks).map_err(plot_err)?;
         for (n, row) in done.iter().enumerate() {
             let y = row.metrics[m];
             if !y.is_finite() {
@@ -121,7 +139,7 @@ fn categories(
         }
         references(ax, table, metric)?;
     }
-    save_plot(&fig, dir, parameter)
+    Ok(fig)
 }
 
 /// The study's references of `metric` as dashed black lines; then the grid and legend.
@@ -202,30 +220,7 @@ mod tests {
 
     #[test]
     fn a_parameter_that_is_not_a_number_gets_a_bar_per_point() {
-        use crate::study::table::PointRow;
-        let row = |index: usize, model: &str, beta: f64, status| PointRow {
-            index,
-            values: vec![serde_json::json!(model), serde_json::json!(2.5)],
-            status,
-            metrics: vec![beta],
-            errors: vec![],
-            error: None,
-            wall_time_s: None,
-        };
-        let table = StudyTable {
-            description: String::new(),
-            parameters: vec![
-                "body.projectile.material.strength".into(),
-                "solver.n_target".into(),
-            ],
-            metrics: vec!["beta".into()],
-            references: vec![("beta".into(), 2.51, "experiment".into())],
-            rows: vec![
-                row(0, "johnson-cook", 1.73, PointStatus::Done),
-                row(1, "steinberg-guinan", 1.72, PointStatus::Done),
-                row(2, "von-mises", f64::NAN, PointStatus::Failed),
-            ],
-        };
+        let table = model_table();
         let dir = std::env::temp_dir().join(format!("sph-plots-{}", std::process::id()));
         std::fs::create_dir_all(&dir).unwrap();
         let written = write_plots(&table, &dir).unwrap();
@@ -244,6 +239,52 @@ mod tests {
             assert_eq!(&std::fs::read(p).unwrap()[1..4], b"PNG");
         }
         std::fs::remove_dir_all(dir).unwrap();
+    }
+
+    /// A study of the projectile's strength model (not a number) and n_target: points
+    /// 0 and 2 finished, point 1 failed.
+    fn model_table() -> StudyTable {
+        use crate::study::table::PointRow;
+        let row = |index: usize, model: &str, beta: f64, status| PointRow {
+            index,
+            values: vec![serde_json::json!(model), serde_json::json!(2.5)],
+            status,
+            metrics: vec![beta],
+            errors: vec![],
+            error: None,
+            wall_time_s: None,
+        };
+        StudyTable {
+            description: String::new(),
+            parameters: vec![
+                "body.projectile.material.strength".into(),
+                "solver.n_target".into(),
+            ],
+            metrics: vec!["beta".into()],
+            references: vec![("beta".into(), 2.51, "experiment".into())],
+            rows: vec![
+                row(0, "johnson-cook", 1.73, PointStatus::Done),
+                row(1, "von-mises", f64::NAN, PointStatus::Failed),
+                row(2, "steinberg-guinan", 1.72, PointStatus::Done),
+            ],
+        }
+    }
+
+    #[test]
+    fn the_bars_of_points_are_ticked_with_their_numbers() {
+        let table = model_table();
+        let done: Vec<_> = table
+            .rows
+            .iter()
+            .filter(|r| r.status == PointStatus::Done)
+            .collect();
+        let (_, report) = categories_figure(&table, &done, 0)
+            .unwrap()
+            .render()
+            .unwrap();
+        // One tick per finished point at its bar (x = 0 and 1), labelled with the
+        // point's number, not its place (nor 0, 0.5, 1, as nice steps would have it).
+        assert_eq!(report.panels[0].x_ticks, ["0", "2"]);
     }
 
     #[test]

@@ -150,6 +150,7 @@ fn gradients_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
     };
     let energy = !ext.specific_energy.is_empty();
     let d = D::DIM as f64;
+    let volume = volumes::<D, RZ>(ext);
     // The pair (i, j) with dx = x_j − x_i, added to i's sums and, for a pair inside the
     // block (`to_j`), to j's: every term is (f_j − f_i) ⊗ ∇_i W̄ or dx ⊗ ∇_i W̄ times the
     // partner's volume, the same product for both sides (both factors change sign).
@@ -182,9 +183,9 @@ fn gradients_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
             // M only where it is used (an outer product per pair).
             m: moments.then(|| D::Tensor::outer(dx, g)),
         };
-        terms.add_to(sums_i, ext.mass[j] / eta(j), dwdh_i);
+        terms.add_to(sums_i, volume[j], dwdh_i);
         if let Some(sums_j) = to_j {
-            terms.add_to(sums_j, ext.mass[i] / eta(i), dwdh_j);
+            terms.add_to(sums_j, volume[i], dwdh_j);
         }
     };
     let finish = |i: usize, s: &Sums<D>| -> (Gradients<D>, D::Tensor) {

@@ -51,6 +51,24 @@ macro_rules! per_geometry {
     };
 }
 
+/// Each particle's volume m/η, real and ghost (η = ρ R̂ in RZ, ρ otherwise): the weight of
+/// its terms in its partners' sums, computed once per particle rather than by a division
+/// per pair side (the same division, so the same bits as a pair's own).
+fn volumes<D: Dimension, const RZ: bool>(ext: &Extended<'_, D>) -> Vec<f64> {
+    (0..ext.position.len())
+        .into_par_iter()
+        .with_min_len(1024)
+        .map(|k| {
+            let eta = if RZ {
+                ext.density[k] * ext.smoothed_radius[k]
+            } else {
+                ext.density[k]
+            };
+            ext.mass[k] / eta
+        })
+        .collect()
+}
+
 mod gradients;
 mod rates;
 mod summation;

@@ -205,6 +205,12 @@ fn rates_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
     // The viscosity switch's factor of each real particle (empty without a switch); a
     // ghost takes its source's, since |∇·v| and |∇×v| do not change under a mirror.
     let switch = viscosity_switch_factors(ext, pk, grads, scheme);
+    // RZ: each particle's volume m/η, which the hoop gauge's sums weigh the pairs with.
+    let volume = if rz {
+        volumes::<D, RZ>(ext)
+    } else {
+        Vec::new()
+    };
     let switch_of = |k: usize| switch[ext.source[k] as usize];
     // RZ: the hoop component R_θθ of particle i's artificial stress, which its hoop
     // force balances (`finish`).
@@ -516,6 +522,7 @@ fn rates_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
             v_star,
             pi_ij,
             f_astress,
+            if rz { volume[j] } else { 0.0 },
         );
         let mut to_j = if both {
             let mi = ext.mass[i];
@@ -539,6 +546,7 @@ fn rates_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
                 v_star,
                 pi_ij,
                 f_astress,
+                if rz { volume[i] } else { 0.0 },
             )
         } else {
             PairPart::ZERO
@@ -731,8 +739,9 @@ struct Sharing<'a, D: Dimension> {
 }
 
 /// One side's share of the pair: `g` is ∇W̄ seen from that side, `force` its dv/dt,
-/// `a_force` its artificial-stress part, `vrel` its velocity less the partner's. Always
-/// inlined into the pair loop, which calls it once or twice per pair.
+/// `a_force` its artificial-stress part, `vrel` its velocity less the partner's; in RZ
+/// `vol_partner` is the partner's volume m/η ([`volumes`]), which weighs the hoop
+/// gauge's sums. Always inlined into the pair loop, which calls it once or twice per pair.
 #[inline(always)]
 fn share<D: Dimension, const RZ: bool>(
     ctx: &Sharing<'_, D>,
@@ -740,6 +749,7 @@ fn share<D: Dimension, const RZ: bool>(
     v_star: D::Vector,
     pi_ij: f64,
     f_astress: f64,
+    vol_partner: f64,
 ) -> PairPart<D> {
     let mut part = PairPart {
         dv: side.force,
@@ -747,7 +757,7 @@ fn share<D: Dimension, const RZ: bool>(
     };
     let g = side.g;
     if RZ {
-        let vx = side.m_partner / side.eta_partner * g.component(0);
+        let vx = vol_partner * g.component(0);
         part.gauge_a = vx;
         part.gauge_g = vx * side.r_partner;
         // 1/r_i + 1/r_j = 2/r_j + (r_j − r_i)/(r_i r_j): the first part is the
