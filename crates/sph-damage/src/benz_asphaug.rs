@@ -241,6 +241,82 @@ impl TryFrom<BenzAsphaugUnchecked> for BenzAsphaug {
 }
 
 impl BenzAsphaug {
+    /// [`DamageModel::evaluate`], and whether its result holds for every smaller σ_1
+    /// ([`DamageModel::evaluate_if_quiet`]): where it reads no σ_1 (an unknown particle,
+    /// D ≥ 1, the pseudo-plastic strain as the activation strain), or where the strain
+    /// σ_1/((1 − D) E) activates none of the particle's flaws. A smaller σ_1 then gives a
+    /// strain no larger (a division by the same positive number keeps the order, and a
+    /// flaw activates at ε ≥ ε_j), so again no flaw, rate 0 and bounds [0, D].
+    fn evaluate_noting_quiet(&self, particle: usize, input: &DamageInput) -> (DamageEval, bool) {
+        let d = input.damage;
+        let Some(n_tot) = self.flaws.n_flaws(particle) else {
+            // Out-of-range particle: NaN, for the solver's state check to report.
+            let eval = DamageEval {
+                rate: f64::NAN,
+                bounds: DamageBounds {
+                    min: 0.0,
+                    max: f64::NAN,
+                },
+                active_flaws: 0,
+            };
+            return (eval, true);
+        };
+        if d >= 1.0 {
+            // Fully damaged: nothing left to grow; all flaws count as active.
+            let eval = DamageEval {
+                rate: 0.0,
+                bounds: DamageBounds { min: 0.0, max: d },
+                active_flaws: n_tot as u32,
+            };
+            return (eval, true);
+        }
+        let strain = input.local_strain();
+        if strain.is_nan() {
+            let eval = DamageEval {
+                rate: f64::NAN,
+                bounds: DamageBounds { min: 0.0, max: d },
+                active_flaws: 0,
+            };
+            return (eval, input.principal_strain.is_some());
+        }
+        // Flaw j is active when ε ≥ ε_j; past the strongest seeded flaw the continued
+        // tail, if any, adds the population's mean share (crate::flaw_tail).
+        let n_act = match self.tail {
+            Some(tail) if strain > tail.top_strain => tail.count(n_tot, strain),
+            _ => self.flaws.activated(particle, strain).unwrap_or(0) as f64,
+        };
+        let rate = if n_act > 0.0 {
+            let growth = self.params.crack_speed_fraction * input.longitudinal_wave_speed
+                / input.particle_size;
+            let factor = match self.params.growth {
+                GrowthLaw::PerActivatedFlaw => n_act,
+                GrowthLaw::ActivatedFraction => (n_act / n_tot as f64).min(1.0),
+                GrowthLaw::SingleCrack => 1.0,
+                GrowthLaw::CrackVolume => match self.params.variable {
+                    DamageVariable::Damage => n_act,
+                    DamageVariable::SquareRoot => n_act.sqrt(),
+                    DamageVariable::CubeRoot => n_act.cbrt(),
+                },
+            };
+            factor * growth
+        } else {
+            0.0
+        };
+        // Cap D ≤ n_act/n_tot (at most 1: the tail activates past n_tot), never below the
+        // current D (no healing).
+        let cap = (n_act / n_tot as f64).min(1.0).max(d);
+        let eval = DamageEval {
+            rate,
+            bounds: DamageBounds { min: 0.0, max: cap },
+            // Whole flaws, saturating for an enormous tail count.
+            active_flaws: n_act as u32,
+        };
+        let scale = (1.0 - d) * input.youngs_modulus;
+        let quiet =
+            input.principal_strain.is_some() || (n_act == 0.0 && scale > 0.0 && scale.is_finite());
+        (eval, quiet)
+    }
+
     /// Seeds the flaws of a body of `n_particles` particles and total volume V (m³).
     pub fn seed(
         params: BenzAsphaugParams,
@@ -333,68 +409,13 @@ impl DamageModel for BenzAsphaug {
 
     #[inline]
     fn evaluate(&self, particle: usize, input: &DamageInput) -> DamageEval {
-        let d = input.damage;
-        let Some(n_tot) = self.flaws.n_flaws(particle) else {
-            // Out-of-range particle: NaN, for the solver's state check to report.
-            return DamageEval {
-                rate: f64::NAN,
-                bounds: DamageBounds {
-                    min: 0.0,
-                    max: f64::NAN,
-                },
-                active_flaws: 0,
-            };
-        };
-        if d >= 1.0 {
-            // Fully damaged: nothing left to grow; all flaws count as active.
-            return DamageEval {
-                rate: 0.0,
-                bounds: DamageBounds { min: 0.0, max: d },
-                active_flaws: n_tot as u32,
-            };
-        }
-        let strain = input.local_strain();
-        if strain.is_nan() {
-            return DamageEval {
-                rate: f64::NAN,
-                bounds: DamageBounds { min: 0.0, max: d },
-                active_flaws: 0,
-            };
-        }
-        // Flaw j is active when ε ≥ ε_j; past the strongest seeded flaw the continued
-        // tail, if any, adds the population's mean share (crate::flaw_tail).
-        let n_act = match self.tail {
-            Some(tail) if strain > tail.top_strain => tail.count(n_tot, strain),
-            _ => self.flaws.activated(particle, strain).unwrap_or(0) as f64,
-        };
-        let growth =
-            self.params.crack_speed_fraction * input.longitudinal_wave_speed / input.particle_size;
-        let factor = match self.params.growth {
-            GrowthLaw::PerActivatedFlaw => n_act,
-            GrowthLaw::ActivatedFraction => (n_act / n_tot as f64).min(1.0),
-            GrowthLaw::SingleCrack => {
-                if n_act > 0.0 {
-                    1.0
-                } else {
-                    0.0
-                }
-            }
-            GrowthLaw::CrackVolume => match self.params.variable {
-                DamageVariable::Damage => n_act,
-                DamageVariable::SquareRoot => n_act.sqrt(),
-                DamageVariable::CubeRoot => n_act.cbrt(),
-            },
-        };
-        let rate = if n_act > 0.0 { factor * growth } else { 0.0 };
-        // Cap D ≤ n_act/n_tot (at most 1: the tail activates past n_tot), never below the
-        // current D (no healing).
-        let cap = (n_act / n_tot as f64).min(1.0).max(d);
-        DamageEval {
-            rate,
-            bounds: DamageBounds { min: 0.0, max: cap },
-            // Whole flaws, saturating for an enormous tail count.
-            active_flaws: n_act as u32,
-        }
+        self.evaluate_noting_quiet(particle, input).0
+    }
+
+    #[inline]
+    fn evaluate_if_quiet(&self, particle: usize, input: &DamageInput) -> Option<DamageEval> {
+        let (eval, quiet) = self.evaluate_noting_quiet(particle, input);
+        quiet.then_some(eval)
     }
 
     fn check_particles(&self, n_particles: usize) -> Result<(), DamageError> {

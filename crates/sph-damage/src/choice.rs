@@ -48,6 +48,9 @@ impl DamageModel for BuiltinDamage {
     fn evaluate(&self, particle: usize, input: &DamageInput) -> DamageEval {
         dispatch!(self, m => m.evaluate(particle, input))
     }
+    fn evaluate_if_quiet(&self, particle: usize, input: &DamageInput) -> Option<DamageEval> {
+        dispatch!(self, m => m.evaluate_if_quiet(particle, input))
+    }
     fn check_particles(&self, n_particles: usize) -> Result<(), DamageError> {
         dispatch!(self, m => m.check_particles(n_particles))
     }

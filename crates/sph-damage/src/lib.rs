@@ -81,7 +81,7 @@ pub use error::DamageError;
 pub use flaw_tail::FlawTail;
 pub use model::{
     BoundAction, Bounded, DamageBounds, DamageEval, DamageInput, DamageModel, DamageVariable,
-    apply_bounds, max_principal_stress,
+    apply_bounds, max_principal_stress, max_principal_stress_bound,
 };
 pub use none::NoDamage;
 pub use params::{NamedWeibull, WeibullParams};

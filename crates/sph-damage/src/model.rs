@@ -123,6 +123,34 @@ pub fn max_principal_stress<T: Tensor>(stress: &T) -> f64 {
     stress.sym_eigenvalues()[dim - 1]
 }
 
+/// An upper bound of [`max_principal_stress`] of the symmetric `stress` from Gershgorin's
+/// discs: every eigenvalue lies within max_i (s_ii + Σ_{j≠i} |s_ij|), each off-diagonal
+/// entry taken as the larger of s_ij and s_ji (either triangle may be the one the
+/// eigen-solver reads), widened by 1e-12 of the matrix's largest row sum, far beyond the
+/// rounding of this sum and of the eigen-solver's σ_1. None when an entry is not finite
+/// (σ_1 must then be computed, to carry the NaN).
+pub fn max_principal_stress_bound<T: Tensor>(stress: &T) -> Option<f64> {
+    let n = <T::Vector as Vector>::DIM;
+    let (mut bound, mut size) = (f64::NEG_INFINITY, 0.0_f64);
+    for i in 0..n {
+        let mut radius = 0.0;
+        for j in (0..n).filter(|&j| j != i) {
+            let (a, b) = (stress.component(i, j), stress.component(j, i));
+            if !(a.is_finite() && b.is_finite()) {
+                return None;
+            }
+            radius += a.abs().max(b.abs());
+        }
+        let d = stress.component(i, i);
+        if !d.is_finite() {
+            return None;
+        }
+        bound = bound.max(d + radius);
+        size = size.max(d.abs() + radius);
+    }
+    Some(bound + 1e-12 * size)
+}
+
 /// The variable s the solver integrates; D = s^p.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]
 #[serde(rename_all = "kebab-case")]
@@ -286,6 +314,19 @@ pub trait DamageModel: Send + Sync + std::fmt::Debug {
 
     /// Rate of s and the bounds on D for particle `particle` in state `input`.
     fn evaluate(&self, particle: usize, input: &DamageInput) -> DamageEval;
+
+    /// [`Self::evaluate`]'s result, when it is also the result for every σ_1 below
+    /// `input.max_principal_stress` (the rest of `input` unchanged); else None. Some for
+    /// a flaw model whose weakest flaw `input` does not activate, or a model that does not
+    /// read σ_1. A solver then evaluates at an upper bound of σ_1
+    /// ([`max_principal_stress_bound`]) and skips the eigenvalue problem of σ_1 itself
+    /// wherever it can, with the same results to the bit. Default: None (σ_1 always
+    /// computed), right for any model; answering Some where the result would differ
+    /// below changes results.
+    fn evaluate_if_quiet(&self, particle: usize, input: &DamageInput) -> Option<DamageEval> {
+        let _ = (particle, input);
+        None
+    }
 
     /// Checks that per-particle state held by the model (e.g. flaws) matches the
     /// solver's particle count. Models without per-particle state accept any count.

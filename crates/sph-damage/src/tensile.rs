@@ -160,4 +160,12 @@ impl DamageModel for MaxTensileStress {
             },
         }
     }
+
+    /// Some at D ≥ 1 (σ_1 unread) and below the threshold, σ_1 < (1 − D) σ_b, where the
+    /// rate is 0 and the bounds [0, D] for any smaller σ_1 as well.
+    fn evaluate_if_quiet(&self, particle: usize, input: &DamageInput) -> Option<DamageEval> {
+        let d = input.damage;
+        (d >= 1.0 || input.max_principal_stress < (1.0 - d) * self.threshold)
+            .then(|| self.evaluate(particle, input))
+    }
 }

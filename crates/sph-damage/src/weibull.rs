@@ -74,6 +74,10 @@ pub struct FlawSet {
     kv: f64,
     #[serde(skip)]
     inv_m: f64,
+    /// Whether every threshold is positive: the smallest, rank 1's, is (it is 0 only
+    /// where (1/(kV))^(1/m) underflows, for an extreme m). Derived, not serialised.
+    #[serde(skip)]
+    positive: bool,
 }
 
 #[derive(Deserialize)]
@@ -131,6 +135,7 @@ impl TryFrom<FlawSetUnchecked> for FlawSet {
             dealt_over,
             kv,
             inv_m: 1.0 / raw.params.m(),
+            positive: threshold(1, kv, 1.0 / raw.params.m()) > 0.0,
         })
     }
 }
@@ -288,6 +293,7 @@ impl FlawSet {
             dealt_over: all as u64,
             kv,
             inv_m: 1.0 / params.m(),
+            positive: threshold(1, kv, 1.0 / params.m()) > 0.0,
         })
     }
 
@@ -408,10 +414,17 @@ impl FlawSet {
     }
 
     /// Number of flaws of particle `i` activated at local strain `strain`, i.e. with
-    /// threshold ≤ strain (a NaN or non-positive strain activates none).
+    /// threshold ≤ strain (a NaN or negative strain activates none).
     #[inline]
     pub fn activated(&self, i: usize, strain: f64) -> Option<usize> {
         let r = self.ranks(i)?;
+        // A NaN or negative strain activates none (thresholds are ≥ 0), and a zero
+        // strain none where every threshold is positive (ranks j ≥ 1, checked when the
+        // set is made or read): decided without a power, as most of a body at rest or
+        // in compression is.
+        if !(strain >= 0.0) || (strain == 0.0 && self.positive) {
+            return Some(0);
+        }
         // Most particles are below their weakest flaw or past their strongest: one or
         // two thresholds decide, the bisection is for the rest.
         let n = r.len();

@@ -5,9 +5,9 @@ use proptest::prelude::*;
 use sph_core::glam::{DMat2, DMat3};
 use sph_damage::{
     ActivationStrain, BenzAsphaug, BenzAsphaugParams, BoundAction, BuiltinDamage, DamageBounds,
-    DamageError, DamageInput, DamageModel, DamageVariable, FlawSet, FlawTail, GrowthLaw,
-    MaxTensileStress, NoDamage, TensileFailure, WeibullParams, apply_bounds, max_principal_stress,
-    youngs_modulus,
+    DamageError, DamageEval, DamageInput, DamageModel, DamageVariable, FlawSet, FlawTail,
+    GrowthLaw, MaxTensileStress, NoDamage, TensileFailure, WeibullParams, apply_bounds,
+    max_principal_stress, max_principal_stress_bound, youngs_modulus,
 };
 
 const E: f64 = 53.062_354_085_603_11e9; // 9·26.7·22.7/102.8 GPa
@@ -522,5 +522,120 @@ proptest! {
             prop_assert!(b.damage <= max_fraction.max(e2.active_flaws as f64 / n_tot) + 1e-15);
             s = b.state;
         }
+    }
+}
+
+/// Two evaluations equal to the bit (a NaN equal to itself).
+fn same_bits(a: &DamageEval, b: &DamageEval) -> bool {
+    a.rate.to_bits() == b.rate.to_bits()
+        && a.bounds.min.to_bits() == b.bounds.min.to_bits()
+        && a.bounds.max.to_bits() == b.bounds.max.to_bits()
+        && a.active_flaws == b.active_flaws
+}
+
+#[test]
+fn a_flaw_model_is_quiet_below_its_weakest_flaw_only() {
+    // Particle 0's flaws are at 1e-4, 2e-4 and 3e-4 (`small_flaws`).
+    let m = small_model(GrowthLaw::SingleCrack);
+    assert!(m.evaluate_if_quiet(0, &input(0.99e-4, 0.0)).is_some());
+    assert!(m.evaluate_if_quiet(0, &input(1.01e-4, 0.0)).is_none());
+    assert!(m.evaluate_if_quiet(0, &input(-1.0, 0.0)).is_some());
+    // A NaN stress is never quiet: σ_1 must carry it.
+    let mut nan = input(0.0, 0.0);
+    nan.max_principal_stress = f64::NAN;
+    assert!(m.evaluate_if_quiet(0, &nan).is_none());
+    // The maximum tensile stress: quiet below (1 − D) σ_b.
+    let mts = MaxTensileStress::new(1e7).unwrap();
+    let at = |sigma: f64| DamageInput {
+        max_principal_stress: sigma,
+        ..input(0.0, 0.5)
+    };
+    assert!(mts.evaluate_if_quiet(0, &at(0.49e7)).is_some());
+    assert!(mts.evaluate_if_quiet(0, &at(0.51e7)).is_none());
+    // A model that does not say is never quiet.
+    #[derive(Debug)]
+    struct Silent;
+    impl DamageModel for Silent {
+        fn name(&self) -> &str {
+            "silent"
+        }
+        fn variable(&self) -> DamageVariable {
+            DamageVariable::Damage
+        }
+        fn evaluate(&self, _: usize, input: &DamageInput) -> DamageEval {
+            NoDamage.evaluate(0, input)
+        }
+    }
+    assert!(Silent.evaluate_if_quiet(0, &at(-1e9)).is_none());
+}
+
+proptest! {
+    /// Where a model answers that its result is quiet at σ_1, every smaller σ_1 gives that
+    /// result to the bit: what lets the solver evaluate at Gershgorin's bound of σ_1 and
+    /// skip its eigenvalues (sph-impact solver/damage.rs).
+    #[test]
+    fn a_quiet_result_holds_for_every_smaller_stress(
+        i in 0usize..500,
+        strain in -1e-3f64..1e-3,
+        d in prop_oneof![Just(0.0), 0.0f64..1.0, Just(1.0)],
+        fraction in 0.0f64..1.0,
+        below in 0.0f64..1e8,
+        growth in law(),
+        continued in any::<bool>(),
+        pseudo in any::<bool>(),
+    ) {
+        let base = seeded();
+        let tail = if continued { FlawTail::Continuum } else { FlawTail::Seeded };
+        let ba = BenzAsphaug::from_flaws(
+            base.params().with_growth(growth).with_tail(tail),
+            base.flaws().clone(),
+        )
+        .unwrap();
+        let mts = MaxTensileStress::new(9.8e6).unwrap();
+        let builtin = BuiltinDamage::BenzAsphaug(ba.clone());
+        let mut at = input(strain, d);
+        if pseudo {
+            at.principal_strain = Some(strain.abs());
+        }
+        let models: [&dyn DamageModel; 4] = [&ba, &mts, &NoDamage, &builtin];
+        for model in models {
+            let Some(quiet) = model.evaluate_if_quiet(i, &at) else {
+                continue;
+            };
+            prop_assert!(same_bits(&quiet, &model.evaluate(i, &at)));
+            let sigma = at.max_principal_stress;
+            for smaller in [sigma * fraction, sigma - below, -1e9, sigma.min(0.0)] {
+                if smaller <= sigma {
+                    let lower = DamageInput { max_principal_stress: smaller, ..at };
+                    prop_assert!(
+                        same_bits(&quiet, &model.evaluate(i, &lower)),
+                        "{}: quiet at {sigma}, not at {smaller}", model.name()
+                    );
+                }
+            }
+        }
+    }
+
+    /// Gershgorin's bound is never below the σ_1 the eigen-solver computes, for
+    /// symmetric stresses and for ones whose triangles differ by rounding.
+    #[test]
+    fn the_bound_of_sigma_1_is_not_below_it(
+        e in proptest::array::uniform9(-1e9f64..1e9),
+        skew in -1e-6f64..1e-6,
+    ) {
+        let s = DMat3::from_cols_array(&e);
+        let sym = (s + s.transpose()) * 0.5;
+        for m in [sym, sym + DMat3::from_cols_array(&[0.0, skew * e[1], 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0])] {
+            let bound = max_principal_stress_bound(&m).unwrap();
+            prop_assert!(bound >= max_principal_stress(&m), "{bound} < {}", max_principal_stress(&m));
+        }
+        let mut bad = sym;
+        bad.y_axis.z = f64::NAN;
+        prop_assert!(max_principal_stress_bound(&bad).is_none());
+        let mut inf = sym;
+        inf.x_axis.x = f64::INFINITY;
+        prop_assert!(max_principal_stress_bound(&inf).is_none());
+        let plane = DMat2::from_cols_array(&[e[0], e[1], e[1], e[4]]);
+        prop_assert!(max_principal_stress_bound(&plane).unwrap() >= max_principal_stress(&plane));
     }
 }

@@ -144,28 +144,38 @@ pub(crate) fn damage_rates<D: Dimension>(
                 - sph_core::glam::DMat3::from_diagonal(sph_core::glam::DVec3::splat(
                     input.pressure[i],
                 ));
-            let sigma_1 = sph_damage::max_principal_stress(&sigma);
             // K = ρ c² (the EOS's isentropic bulk modulus), E = 9KG/(3K + G).
             let (e, c_l) = elastic_moduli(state, input, i);
-            let eval = model.evaluate(
-                state.damage_index[i] as usize,
-                &DamageInput {
-                    max_principal_stress: sigma_1,
-                    youngs_modulus: e,
-                    longitudinal_wave_speed: c_l,
-                    particle_size: input.spacing[i],
-                    damage: d,
-                    // λ_max of the pseudo-plastic strain (3×3: in RZ with the hoop
-                    // entry) where the model activates on it; none is tracked in a
-                    // run without strength, where it stays zero.
-                    principal_strain: pseudo[p.material[i] as usize].then(|| {
-                        state
-                            .pseudo_strain
-                            .get(i)
-                            .map_or(0.0, sph_damage::max_principal_stress)
-                    }),
-                },
-            );
+            let index = state.damage_index[i] as usize;
+            let mut at = DamageInput {
+                max_principal_stress: f64::NAN,
+                youngs_modulus: e,
+                longitudinal_wave_speed: c_l,
+                particle_size: input.spacing[i],
+                damage: d,
+                // λ_max of the pseudo-plastic strain (3×3: in RZ with the hoop entry)
+                // where the model activates on it; none is tracked in a run without
+                // strength, where it stays zero.
+                principal_strain: pseudo[p.material[i] as usize].then(|| {
+                    state
+                        .pseudo_strain
+                        .get(i)
+                        .map_or(0.0, sph_damage::max_principal_stress)
+                }),
+            };
+            // σ_1 is an eigenvalue problem (Jacobi rotations). Where Gershgorin's upper
+            // bound of it already leaves the model quiet (no flaw activated), the model's
+            // result at the bound is its result at σ_1, to the bit
+            // (`DamageModel::evaluate_if_quiet`): most of a target is compressed or at
+            // rest, and there σ_1 is not needed.
+            let quiet = sph_damage::max_principal_stress_bound(&sigma).and_then(|bound| {
+                at.max_principal_stress = bound;
+                model.evaluate_if_quiet(index, &at)
+            });
+            let eval = quiet.unwrap_or_else(|| {
+                at.max_principal_stress = sph_damage::max_principal_stress(&sigma);
+                model.evaluate(index, &at)
+            });
             DamageRate {
                 rate: eval.rate,
                 bounds: eval.bounds,
