@@ -110,10 +110,11 @@ pub fn verify(
 pub fn study(
     file: &Path,
     out: Option<&Path>,
+    scale: Option<f64>,
     options: &crate::study::StudyOptions,
 ) -> Result<crate::study::StudyTable, CommandError> {
-    use crate::study::{PointStatus, Study, run_study};
-    let study = Study::from_toml_file(file).map_err(CommandError::bad_input)?;
+    use crate::study::{PointStatus, run_study};
+    let study = read_study(file, scale)?;
     let dir = study_directory(file, out);
     let mut options = options.clone();
     if options.jobs == 0 {
@@ -171,9 +172,10 @@ pub fn study(
 pub fn fit(
     file: &Path,
     out: Option<&Path>,
+    scale: Option<f64>,
     options: &crate::study::StudyOptions,
 ) -> Result<crate::study::FitReport, CommandError> {
-    let fit = crate::study::Fit::from_toml_file(file).map_err(CommandError::bad_input)?;
+    let fit = read_fit(file, scale)?;
     let dir = study_directory(file, out);
     let report = crate::study::run_fit(&fit, &dir, options).map_err(study_error)?;
     if !options.quiet {
@@ -194,8 +196,8 @@ pub fn fit(
 
 /// `sph-impact fit FILE --plots`: draws the fit's plots again from its directory's
 /// fit.csv, without running, and prints their paths.
-pub fn fit_plots(file: &Path, out: Option<&Path>) -> Result<(), CommandError> {
-    let fit = crate::study::Fit::from_toml_file(file).map_err(CommandError::bad_input)?;
+pub fn fit_plots(file: &Path, out: Option<&Path>, scale: Option<f64>) -> Result<(), CommandError> {
+    let fit = read_fit(file, scale)?;
     let dir = study_directory(file, out);
     let written = crate::study::redraw_fit_plots(&fit, &dir).map_err(study_error)?;
     let lines: Vec<String> = written
@@ -203,6 +205,27 @@ pub fn fit_plots(file: &Path, out: Option<&Path>) -> Result<(), CommandError> {
         .map(|p| crate::input::printable(&p.display().to_string()).into_owned())
         .collect();
     write_stdout(&(lines.join("\n") + "\n"))
+}
+
+/// The study of `file`, at `scale` (`--resolution-scale`) when given instead of its own.
+fn read_study(file: &Path, scale: Option<f64>) -> Result<crate::study::Study, CommandError> {
+    let mut study = crate::study::Study::from_toml_file(file).map_err(CommandError::bad_input)?;
+    if let Some(s) = scale {
+        study
+            .set_resolution_scale(s)
+            .map_err(CommandError::bad_input)?;
+    }
+    Ok(study)
+}
+
+/// The fit of `file`, at `scale` (`--resolution-scale`) when given instead of its own.
+fn read_fit(file: &Path, scale: Option<f64>) -> Result<crate::study::Fit, CommandError> {
+    let mut fit = crate::study::Fit::from_toml_file(file).map_err(CommandError::bad_input)?;
+    if let Some(s) = scale {
+        fit.set_resolution_scale(s)
+            .map_err(CommandError::bad_input)?;
+    }
+    Ok(fit)
 }
 
 /// The study directory: `--out`, else `out/<study file stem>`.
@@ -226,10 +249,15 @@ fn study_error(e: crate::study::StudyError) -> CommandError {
 
 /// `sph-impact study FILE --emit slurm`: writes the points' scenes and `study.sbatch`
 /// into the study directory (study::emit_slurm) and prints the script's path.
-pub fn study_emit_slurm(file: &Path, out: Option<&Path>, quiet: bool) -> Result<(), CommandError> {
-    let study = crate::study::Study::from_toml_file(file).map_err(CommandError::bad_input)?;
+pub fn study_emit_slurm(
+    file: &Path,
+    out: Option<&Path>,
+    scale: Option<f64>,
+    quiet: bool,
+) -> Result<(), CommandError> {
+    let study = read_study(file, scale)?;
     let dir = study_directory(file, out);
-    let script = crate::study::emit_slurm(&study, file, &dir).map_err(study_error)?;
+    let script = crate::study::emit_slurm(&study, file, &dir, scale).map_err(study_error)?;
     if !quiet {
         write_stdout(&format!(
             "{} points; submit with: sbatch {}\n",

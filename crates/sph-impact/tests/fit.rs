@@ -456,3 +456,26 @@ fn every_bundled_study_and_fit_file_reads_and_checks() {
     }
     assert!(read >= 5, "{read} files under {}", dir.display());
 }
+
+/// `--resolution-scale` (`Fit::set_resolution_scale`) sets the scale of the fit's scene
+/// and of every case, the hold-outs included; a scale that is not a positive number is
+/// refused.
+#[test]
+fn a_resolution_scale_given_to_a_fit_applies_to_every_case() {
+    let file =
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/studies/table2_fit_rz.toml");
+    let mut fit = Fit::from_toml_file(&file).unwrap();
+    assert_eq!(fit.study.resolution_scale, 0.5);
+    assert_eq!(fit.cases.len(), 2);
+    fit.set_resolution_scale(1.0).unwrap();
+    assert_eq!(fit.study.resolution_scale, 1.0);
+    for case in &fit.cases {
+        assert_eq!(case.study.resolution_scale, 1.0, "{}", case.name);
+    }
+    let e = fit.set_resolution_scale(0.0).unwrap_err();
+    assert!(
+        e.to_string()
+            .contains("--resolution-scale must be a positive number"),
+        "{e}"
+    );
+}

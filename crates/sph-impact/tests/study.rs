@@ -393,3 +393,85 @@ value = 9.8e6
     let e = Study::from_toml_str(&bad, "derived.toml", &scenes()).unwrap_err();
     assert!(e.to_string().contains("`derived[0]`: point 0 (body.target.material.damage.m = 10.0, body.target.material.damage.k = 2.7e41): the scene has no body named `rock`"), "{e}");
 }
+
+/// `--resolution-scale` runs every point at that scale in place of the file's: the
+/// points' scenes and summaries record it, the Slurm script passes it to every task, a
+/// study directory made at one scale is refused at another, and a scale that is not a
+/// positive number is bad input.
+#[test]
+fn a_resolution_scale_on_the_command_line_runs_every_point_at_it() {
+    let work = fresh("study_resolution_scale");
+    std::fs::create_dir_all(&work).unwrap();
+    let scene = scenes().join("smoke_rz.toml");
+    let file = work.join("one.study.toml");
+    std::fs::write(
+        &file,
+        format!(
+            "scene = {:?}\nend_time = 0.05e-6\nmetrics = [\"steps\"]\n\n[[parameter]]\n\
+             path = \"solver.n_target\"\nvalues = [2.5]\n",
+            scene.display().to_string()
+        ),
+    )
+    .unwrap();
+    let exe = env!("CARGO_BIN_EXE_sph-impact");
+    let study = |dir: &Path, extra: &[&str]| {
+        std::process::Command::new(exe)
+            .args([
+                "study",
+                file.to_str().unwrap(),
+                "--out",
+                dir.to_str().unwrap(),
+            ])
+            .args(extra)
+            .arg("--quiet")
+            .output()
+            .unwrap()
+    };
+    let dir = work.join("fine");
+    let out = study(&dir, &["--resolution-scale", "2"]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let stored = std::fs::read_to_string(dir.join("points/0000/scene.toml")).unwrap();
+    assert!(stored.contains("resolution_scale = 2.0,"), "{stored}");
+    let summary: serde_json::Value = serde_json::from_str(
+        &std::fs::read_to_string(dir.join("points/0000/run/summary.json")).unwrap(),
+    )
+    .unwrap();
+    assert_eq!(summary["resolution_scale"], 2.0);
+    // Continued at the file's own scale: refused, not mixed.
+    let again = study(&dir, &[]);
+    assert_eq!(again.status.code(), Some(2));
+    assert!(
+        String::from_utf8_lossy(&again.stderr).contains("another scene"),
+        "{}",
+        String::from_utf8_lossy(&again.stderr)
+    );
+    // The job array's tasks and its collection run at the scale given.
+    let array = work.join("array");
+    let out = study(&array, &["--resolution-scale", "2", "--emit", "slurm"]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let script = std::fs::read_to_string(array.join("study.sbatch")).unwrap();
+    assert_eq!(
+        script.matches(" --resolution-scale 2.0 ").count(),
+        2,
+        "{script}"
+    );
+    // Not a positive number: bad input, said as such.
+    for bad in ["0", "-1", "nan"] {
+        let arg = format!("--resolution-scale={bad}");
+        let out = study(&work.join("bad"), &[arg.as_str()]);
+        assert_eq!(out.status.code(), Some(2), "{bad}");
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(
+            err.contains("--resolution-scale must be a positive number"),
+            "{err}"
+        );
+    }
+}

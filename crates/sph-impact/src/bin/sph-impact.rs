@@ -108,6 +108,11 @@ enum Command {
         /// instead of running: `slurm` (study.sbatch).
         #[arg(long, value_parser = ["slurm"])]
         emit: Option<String>,
+        /// Run every point at this resolution scale instead of the file's
+        /// `resolution_scale` (e.g. 1 for the study's A_res 0.5 mm). Give it again to
+        /// continue the study directory: one made at another scale is refused.
+        #[arg(long, value_name = "S")]
+        resolution_scale: Option<f64>,
         /// No progress lines and no table on standard output.
         #[arg(long)]
         quiet: bool,
@@ -126,6 +131,11 @@ enum Command {
         /// by side, each with the fit's `threads_per_run` (default 1).
         #[arg(long, default_value_t = 1)]
         jobs: usize,
+        /// Run the fit's scene and its cases at this resolution scale instead of the
+        /// file's `resolution_scale`. Give it again to continue the fit directory: one
+        /// made at another scale is refused.
+        #[arg(long, value_name = "S")]
+        resolution_scale: Option<f64>,
         /// No table on standard output.
         #[arg(long)]
         quiet: bool,
@@ -291,10 +301,16 @@ fn command(cli: Cli, ranks: &dyn Ranks) -> Result<(), CommandError> {
             point,
             collect,
             emit,
+            resolution_scale,
             quiet,
         } => {
             if emit.is_some() {
-                return sph_impact::cli::study_emit_slurm(&study, out.as_deref(), quiet);
+                return sph_impact::cli::study_emit_slurm(
+                    &study,
+                    out.as_deref(),
+                    resolution_scale,
+                    quiet,
+                );
             }
             let options = sph_impact::study::StudyOptions {
                 // 0: the cores divided by the study's threads per run (cli::study).
@@ -306,18 +322,20 @@ fn command(cli: Cli, ranks: &dyn Ranks) -> Result<(), CommandError> {
                 stop: StopFlag::new(),
             };
             catch_signals(&options.stop)?;
-            sph_impact::cli::study(&study, out.as_deref(), &options).map(|_| ())
+            sph_impact::cli::study(&study, out.as_deref(), resolution_scale, &options).map(|_| ())
         }
         Command::Fit {
             fit,
             out,
+            resolution_scale,
             plots: true,
             ..
-        } => sph_impact::cli::fit_plots(&fit, out.as_deref()),
+        } => sph_impact::cli::fit_plots(&fit, out.as_deref(), resolution_scale),
         Command::Fit {
             fit,
             out,
             jobs,
+            resolution_scale,
             quiet,
             plots: false,
         } => {
@@ -327,7 +345,7 @@ fn command(cli: Cli, ranks: &dyn Ranks) -> Result<(), CommandError> {
                 ..Default::default()
             };
             catch_signals(&options.stop)?;
-            sph_impact::cli::fit(&fit, out.as_deref(), &options).map(|_| ())
+            sph_impact::cli::fit(&fit, out.as_deref(), resolution_scale, &options).map(|_| ())
         }
         Command::Materials { json } => sph_impact::cli::materials(json),
         Command::Verify {

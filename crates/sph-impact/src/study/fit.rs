@@ -254,6 +254,17 @@ fn fix(study: &mut Study, path: &str, value: &toml::Value) -> Result<(), (&'stat
 }
 
 impl Fit {
+    /// Runs the fit's scene and every case at `scale` in place of the file's
+    /// `resolution_scale` (the command line's `--resolution-scale`); as
+    /// [`Study::set_resolution_scale`].
+    pub fn set_resolution_scale(&mut self, scale: f64) -> Result<(), StudyError> {
+        self.study.set_resolution_scale(scale)?;
+        for case in &mut self.cases {
+            case.study.set_resolution_scale(scale)?;
+        }
+        Ok(())
+    }
+
     /// Reads and checks a fit file; its `scene` is relative to the file's directory.
     pub fn from_toml_file(path: impl AsRef<Path>) -> Result<Self, StudyError> {
         let (text, origin, dir) = read_path(path.as_ref())?;

@@ -14,7 +14,12 @@ use std::path::{Path, PathBuf};
 /// study read from `study_file`, and returns the script's path. The script names the
 /// study file and directory by absolute path, so it runs from any directory; the program
 /// is `$SPH_IMPACT` if set, else `sph-impact` on the `PATH`.
-pub fn emit_slurm(study: &Study, study_file: &Path, dir: &Path) -> Result<PathBuf, StudyError> {
+pub fn emit_slurm(
+    study: &Study,
+    study_file: &Path,
+    dir: &Path,
+    scale: Option<f64>,
+) -> Result<PathBuf, StudyError> {
     std::fs::create_dir_all(dir).map_err(|e| StudyError::io(dir, e))?;
     let points = study.points();
     for point in &points {
@@ -35,14 +40,14 @@ pub fn emit_slurm(study: &Study, study_file: &Path, dir: &Path) -> Result<PathBu
         "#!/bin/bash\n\
          # {n} points of the study {file}, one per task of a Slurm job array\n\
          # (docs/studies.md, \"On a cluster\"). Submit: sbatch {script}\n\
-         # Then: sph-impact study {file} --out {out} --collect\n\
+         # Then: sph-impact study {file} --out {out}{scale} --collect\n\
          #SBATCH --job-name={name}\n\
          #SBATCH --array=0-{last}\n\
          #SBATCH --ntasks=1\n\
          #SBATCH --cpus-per-task={threads}\n\
          #SBATCH --output={logs}/%A_%a.out\n\
          set -euo pipefail\n\
-         exec \"${{SPH_IMPACT:-sph-impact}}\" study {qfile} --out {qout} --point \"$SLURM_ARRAY_TASK_ID\" --quiet\n",
+         exec \"${{SPH_IMPACT:-sph-impact}}\" study {qfile} --out {qout}{scale} --point \"$SLURM_ARRAY_TASK_ID\" --quiet\n",
         n = points.len(),
         file = file.display(),
         script = out.join("study.sbatch").display(),
@@ -53,6 +58,9 @@ pub fn emit_slurm(study: &Study, study_file: &Path, dir: &Path) -> Result<PathBu
         logs = logs.display(),
         qfile = shell_quote(&file.display().to_string()),
         qout = shell_quote(&out.display().to_string()),
+        // A scale given on the command line in place of the file's: every task, and the
+        // collection, must run with it (the points' scenes record it).
+        scale = scale.map_or_else(String::new, |s| format!(" --resolution-scale {s:?}")),
     );
     let path = out.join("study.sbatch");
     write_whole(&path, script.as_bytes())?;

@@ -167,6 +167,20 @@ impl Study {
         toml::to_string(&table).map_err(|e| StudyError::failed(e.to_string()))
     }
 
+    /// Runs every point at `scale` in place of the file's `resolution_scale` (the
+    /// command line's `--resolution-scale`): a positive number. A study directory keeps
+    /// the scale its points ran at (`points/NNNN/scene.toml`), so continuing it at
+    /// another scale is refused.
+    pub fn set_resolution_scale(&mut self, scale: f64) -> Result<(), StudyError> {
+        if !(scale.is_finite() && scale > 0.0) {
+            return Err(StudyError::bad(format!(
+                "--resolution-scale must be a positive number, not {scale}"
+            )));
+        }
+        self.resolution_scale = scale;
+        Ok(())
+    }
+
     /// Checks the study before anything runs: the options, the metrics, the references,
     /// each axis' values on the base scene (an error names the parameter and the value),
     /// then every point's scene as a whole.
