@@ -79,6 +79,27 @@ fn placed_ticks(
     }
 }
 
+/// `text` as drawn within `max` pixels at `scale`: whole where it fits, else its first
+/// and last characters about an ellipsis in the middle (the end of a dotted metric name,
+/// `…incipient_melting`, is as telling as its start).
+pub(crate) fn fitted(text: &str, max: i64, scale: u32) -> std::borrow::Cow<'_, str> {
+    if font::text_width(text, scale) as i64 <= max {
+        return text.into();
+    }
+    let chars: Vec<char> = text.chars().collect();
+    let room = ((max.max(0) as u32 / scale + 1) / font::ADVANCE) as usize;
+    if room <= 1 {
+        return "…".into();
+    }
+    let kept = room - 1;
+    let head = kept / 2;
+    let tail = kept - head;
+    let mut out: String = chars[..head].iter().collect();
+    out.push('…');
+    out.extend(&chars[chars.len() - tail..]);
+    out.into()
+}
+
 /// Draws `ax` inside `area` of `canvas` with text at integer `scale`.
 pub(crate) fn panel(
     canvas: &mut Canvas,
@@ -264,23 +285,31 @@ pub(crate) fn panel(
         }
     }
 
-    // Axis labels and title.
+    // Axis labels and title, each cut in its middle where it is longer than its side of
+    // the plot (the title: than the panel about the plot's centre), so that neighbouring
+    // panels' text never overlaps.
     let cx = (plot.x0 + plot.x1) / 2;
     if !ax.xlabel.is_empty() {
         let y = below + TICK + GAP + lh + 6;
-        canvas.text(cx, y, &ax.xlabel, &xlabel_style);
+        let text = fitted(&ax.xlabel, plot.width(), scale);
+        canvas.text(cx, y, &text, &xlabel_style);
     }
     if !ax.ylabel.is_empty() {
         let style = TextStyle::new(scale)
             .anchor(HAlign::Center, VAlign::Top)
             .vertical();
-        canvas.text(area.x0 + PAD, (plot.y0 + plot.y1) / 2, &ax.ylabel, &style);
+        let text = fitted(&ax.ylabel, plot.y1 - plot.y0, scale);
+        canvas.text(area.x0 + PAD, (plot.y0 + plot.y1) / 2, &text, &style);
     }
     if !ax.title.is_empty() {
         let style = TextStyle::new(scale).anchor(HAlign::Center, VAlign::Top);
+        // Centred on the plot, which sits right of the panel's centre: the room is
+        // twice the nearer side's.
+        let half = (cx - area.x0).min(area.x1 - cx) - PAD;
+        let text = fitted(&ax.title, 2 * half, scale);
         // Drawn twice one pixel apart: a bold title.
-        canvas.text(cx, area.y0 + PAD, &ax.title, &style);
-        canvas.text(cx + 1, area.y0 + PAD, &ax.title, &style);
+        canvas.text(cx, area.y0 + PAD, &text, &style);
+        canvas.text(cx + 1, area.y0 + PAD, &text, &style);
     }
     if let (Some((cs, range)), Some(t)) = (cbar, &cbar_ticks) {
         colorbar::draw(canvas, plot, cs, range, t, scale);
@@ -291,4 +320,30 @@ pub(crate) fn panel(
         series,
         x_ticks: xt.major.iter().map(|t| t.label.clone()).collect(),
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn text_longer_than_its_room_is_cut_in_the_middle() {
+        let name = "projectile_phase_fractions.incipient_melting";
+        // Fits: unchanged.
+        assert_eq!(fitted(name, 10_000, 1), name);
+        // Too long: within the room, both ends kept about the ellipsis, which the font
+        // draws (not as a missing glyph's box).
+        for (max, scale) in [(120, 1), (240, 2), (61, 1)] {
+            let cut = fitted(name, max, scale);
+            assert!(
+                font::text_width(&cut, scale) as i64 <= max,
+                "{cut} at {max}"
+            );
+            let (head, tail) = cut.split_once('…').unwrap();
+            assert!(name.starts_with(head) && name.ends_with(tail), "{cut}");
+            assert!(tail.len() >= head.len() && !head.is_empty(), "{cut}");
+        }
+        assert_eq!(fitted(name, 3, 1), "…");
+        assert!(font::glyph('…').is_some());
+    }
 }
