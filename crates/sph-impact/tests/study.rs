@@ -465,8 +465,8 @@ fn a_resolution_scale_on_the_command_line_runs_every_point_at_it() {
     );
     // Not a positive number: bad input, said as such.
     for bad in ["0", "-1", "nan"] {
-        let arg = format!("--resolution-scale={bad}");
-        let out = study(&work.join("bad"), &[arg.as_str()]);
+        // A negative number is the option's value, not an unknown flag.
+        let out = study(&work.join("bad"), &["--resolution-scale", bad]);
         assert_eq!(out.status.code(), Some(2), "{bad}");
         let err = String::from_utf8_lossy(&out.stderr);
         assert!(

@@ -27,6 +27,8 @@ struct Cli {
 enum Command {
     /// Run an impact scene (TOML; docs/scenes.md) and write snapshots, history,
     /// summary and plots into the run directory.
+    // A negative number is an option's value (refused with its own message), not a flag.
+    #[command(allow_negative_numbers = true)]
     Run {
         /// The scene file.
         scene: PathBuf,
@@ -65,6 +67,8 @@ enum Command {
     },
     /// Validate a scene, place its bodies, and estimate the run's first time step, steps,
     /// runtime and memory.
+    // A negative number is an option's value (refused with its own message), not a flag.
+    #[command(allow_negative_numbers = true)]
     Check {
         /// The scene file.
         scene: PathBuf,
@@ -81,6 +85,8 @@ enum Command {
     /// Run a parameter study (TOML; docs/studies.md): the base scene at every
     /// combination of the parameters' values, points side by side, resumable; writes
     /// study.csv, study.json and study.md into the study directory.
+    // A negative number is an option's value (refused with its own message), not a flag.
+    #[command(allow_negative_numbers = true)]
     Study {
         /// The study file.
         study: PathBuf,
@@ -120,6 +126,8 @@ enum Command {
     /// Fit free parameters of a scene to target metrics under constraints (TOML;
     /// docs/studies.md, "Fits"): Nelder–Mead over runs, resumable; writes fit.csv,
     /// fit.json and fit.md.
+    // A negative number is an option's value (refused with its own message), not a flag.
+    #[command(allow_negative_numbers = true)]
     Fit {
         /// The fit file.
         fit: PathBuf,
@@ -151,6 +159,8 @@ enum Command {
         json: bool,
     },
     /// Run one verification problem and compare with its exact solution.
+    // A negative number is an option's value (refused with its own message), not a flag.
+    #[command(allow_negative_numbers = true)]
     Verify {
         /// sod, toro123, toro3, noh-planar, noh-cylindrical, noh-spherical, sedov-2d, sedov-3d,
         /// elastic-bar, hel-impact, spin, contact, plate, rings, taylor, tensile-bar
