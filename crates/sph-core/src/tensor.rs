@@ -57,6 +57,34 @@ pub trait Tensor:
     /// The eigenvalues of [`Self::sym_eigen`], bit for bit, without the eigenvectors
     /// (less work: no accumulated rotations in 3-D, no angle in 2-D).
     fn sym_eigenvalues(&self) -> [f64; 3];
+    /// Gershgorin's discs of the symmetric part: (min_i (a_ii − R_i), max_i (a_ii + R_i),
+    /// max_i (|a_ii| + R_i)) with R_i = Σ_{j≠i} max(|a_ij|, |a_ji|), so every eigenvalue
+    /// of [`Self::sym_eigen`] lies in [first, second] up to rounding (either triangle may
+    /// be the one read); the third is a scale for such rounding margins. None when an
+    /// entry is not finite. Costs no square root: a test that these bounds decide skips
+    /// the eigenvalue problem.
+    fn gershgorin(&self) -> Option<(f64, f64, f64)> {
+        let n = Self::Vector::DIM;
+        let (mut lower, mut upper, mut size) = (f64::INFINITY, f64::NEG_INFINITY, 0.0_f64);
+        for i in 0..n {
+            let mut radius = 0.0;
+            for j in (0..n).filter(|&j| j != i) {
+                let (a, b) = (self.component(i, j), self.component(j, i));
+                if !(a.is_finite() && b.is_finite()) {
+                    return None;
+                }
+                radius += a.abs().max(b.abs());
+            }
+            let d = self.component(i, i);
+            if !d.is_finite() {
+                return None;
+            }
+            lower = lower.min(d - radius);
+            upper = upper.max(d + radius);
+            size = size.max(d.abs() + radius);
+        }
+        Some((lower, upper, size))
+    }
 
     /// Outer product `a ⊗ b`, entry (i, j) = a_i b_j.
     #[inline]
@@ -263,6 +291,23 @@ impl Tensor for DMat3 {
 mod tests {
     use super::*;
     use approx::assert_relative_eq;
+
+    #[test]
+    fn gershgorin_discs_bound_the_eigenvalues() {
+        // [[2, 1], [1, 3]]: discs [1, 3] and [2, 4]; eigenvalues (5 ∓ √5)/2 = 1.38, 3.62.
+        let m = DMat2::from_cols_array(&[2.0, 1.0, 1.0, 3.0]);
+        assert_eq!(m.gershgorin(), Some((1.0, 4.0, 4.0)));
+        let e = m.sym_eigenvalues();
+        assert!(e[0] >= 1.0 && e[1] <= 4.0);
+        // Triangles that differ: the larger entry counts.
+        let skew = DMat3::from_cols_array(&[-5.0, 0.5, 0.0, -2.0, 1.0, 0.0, 0.0, 0.0, 1.0]);
+        assert_eq!(skew.gershgorin(), Some((-7.0, 3.0, 7.0)));
+        // A non-finite entry: no bounds.
+        let mut bad = DMat3::IDENTITY;
+        bad.z_axis.x = f64::NAN;
+        assert_eq!(bad.gershgorin(), None);
+        assert_eq!(2.5f64.gershgorin(), Some((2.5, 2.5, 2.5)));
+    }
 
     #[test]
     fn hand_computed_invariants_3d() {

@@ -124,31 +124,12 @@ pub fn max_principal_stress<T: Tensor>(stress: &T) -> f64 {
 }
 
 /// An upper bound of [`max_principal_stress`] of the symmetric `stress` from Gershgorin's
-/// discs: every eigenvalue lies within max_i (s_ii + Σ_{j≠i} |s_ij|), each off-diagonal
-/// entry taken as the larger of s_ij and s_ji (either triangle may be the one the
-/// eigen-solver reads), widened by 1e-12 of the matrix's largest row sum, far beyond the
-/// rounding of this sum and of the eigen-solver's σ_1. None when an entry is not finite
-/// (σ_1 must then be computed, to carry the NaN).
+/// discs (`Tensor::gershgorin`), widened by 1e-12 of the matrix's largest row sum, far
+/// beyond the rounding of the discs and of the eigen-solver's σ_1. None when an entry is
+/// not finite (σ_1 must then be computed, to carry the NaN).
 pub fn max_principal_stress_bound<T: Tensor>(stress: &T) -> Option<f64> {
-    let n = <T::Vector as Vector>::DIM;
-    let (mut bound, mut size) = (f64::NEG_INFINITY, 0.0_f64);
-    for i in 0..n {
-        let mut radius = 0.0;
-        for j in (0..n).filter(|&j| j != i) {
-            let (a, b) = (stress.component(i, j), stress.component(j, i));
-            if !(a.is_finite() && b.is_finite()) {
-                return None;
-            }
-            radius += a.abs().max(b.abs());
-        }
-        let d = stress.component(i, i);
-        if !d.is_finite() {
-            return None;
-        }
-        bound = bound.max(d + radius);
-        size = size.max(d.abs() + radius);
-    }
-    Some(bound + 1e-12 * size)
+    let (_, upper, size) = stress.gershgorin()?;
+    Some(upper + 1e-12 * size)
 }
 
 /// The variable s the solver integrates; D = s^p.

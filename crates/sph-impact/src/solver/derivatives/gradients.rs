@@ -322,27 +322,16 @@ fn eigenvalues_well_conditioned<T: Tensor>(s: &T) -> bool {
     !refused
 }
 
-/// Whether Gershgorin's discs alone show the symmetric `s` well conditioned: every
-/// eigenvalue lies in some [s_ii − R_i, s_ii + R_i] (R_i the row's off-diagonal absolute
-/// sum), so lb = min(s_ii − R_i) > 0 and ub = max(s_ii + R_i) ≤ 99 lb give
+/// Whether Gershgorin's discs alone (`Tensor::gershgorin`) show the symmetric `s` well
+/// conditioned: lb = min(s_ii − R_i) > 0 and ub = max(s_ii + R_i) ≤ 99 lb give
 /// 0 < lb ≤ λ_min and λ_max ≤ 99 λ_min. The margin to the test's 100 (and lb ≥ ‖s‖/99)
 /// is far beyond the computed eigenvalues' error, so [`well_conditioned_inverse`] decides
 /// as from the eigenvalues, without them: the common case of an M near the identity
 /// (pass 1 of every particle away from a surface) skips the eigenvalue solver's square
-/// root and trigonometry.
+/// root and trigonometry. A matrix with a non-finite entry goes to the eigenvalues.
 fn gershgorin_well_conditioned<T: Tensor>(s: &T) -> bool {
-    let n = T::Vector::DIM;
-    let (mut lb, mut ub) = (f64::INFINITY, f64::NEG_INFINITY);
-    for i in 0..n {
-        let r: f64 = (0..n)
-            .filter(|&j| j != i)
-            .map(|j| s.component(i, j).abs())
-            .sum();
-        let d = s.component(i, i);
-        lb = lb.min(d - r);
-        ub = ub.max(d + r);
-    }
-    lb > 0.0 && ub <= 99.0 * lb
+    s.gershgorin()
+        .is_some_and(|(lb, ub, _)| lb > 0.0 && ub <= 99.0 * lb)
 }
 
 #[cfg(test)]
