@@ -193,6 +193,9 @@ enum Command {
 }
 
 fn main() -> ExitCode {
+    if let Err(message) = processor_supported() {
+        return finish(Err(CommandError::failed(message)));
+    }
     keep_freed_memory();
     let cli = Cli::parse();
     // With the `mpi` feature every rank runs the command (`mpirun -n N sph-impact run
@@ -202,6 +205,33 @@ fn main() -> ExitCode {
     #[cfg(not(feature = "mpi"))]
     let result = command(cli, &sph_impact::solver::OneRank);
     finish(result)
+}
+
+/// Refuses, with a message, a processor that lacks the instructions this build was
+/// compiled for: the workspace builds x86-64 code for the x86-64-v3 level
+/// (.cargo/config.toml), which would otherwise stop with "illegal instruction" somewhere
+/// in the run. Checked first in `main`, before any floating-point work.
+#[cfg(all(target_arch = "x86_64", target_feature = "avx2"))]
+fn processor_supported() -> Result<(), String> {
+    if std::arch::is_x86_feature_detected!("avx2")
+        && std::arch::is_x86_feature_detected!("fma")
+        && std::arch::is_x86_feature_detected!("bmi2")
+    {
+        Ok(())
+    } else {
+        Err(
+            "this processor lacks AVX2, FMA or BMI2, which this build of sph-impact \
+             uses (x86-64-v3, .cargo/config.toml); build it for the baseline with \
+             `RUSTFLAGS= cargo build --release`"
+                .to_string(),
+        )
+    }
+}
+
+/// A build for the baseline (or another architecture) runs on any processor of it.
+#[cfg(not(all(target_arch = "x86_64", target_feature = "avx2")))]
+fn processor_supported() -> Result<(), String> {
+    Ok(())
 }
 
 /// Tells glibc's allocator to keep the memory a stage frees for the next stage instead

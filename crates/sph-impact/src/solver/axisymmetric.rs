@@ -53,6 +53,7 @@
 
 use crate::solver::config::EnergyForm;
 use crate::solver::derivatives::Rates;
+use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 use sph_core::{Dimension, Particles, Vector};
 
@@ -142,26 +143,32 @@ pub(crate) fn add_hoop_terms<D: Dimension>(
     hoop_gauge: &[f64],
 ) {
     let p = input.particles;
-    for ((i, out), &gauge) in rates.iter_mut().enumerate().zip(hoop_gauge) {
-        let (r, h) = (radius(p.position[i]), p.smoothing_length[i]);
-        // R̂ stands for r in every denominator: equal to r beyond one support radius from
-        // the axis, and finite on it.
-        let r_hat = input.smoothed_radius.at(r, h);
-        let rho = p.density[i];
-        let v_r = p.velocity[i].component(0);
-        // η = ρ R̂: dρ/dt = (dη/dt − ρ R̂' v_r)/R̂.
-        out.drho = (out.drho - rho * input.smoothed_radius.slope(r, h) * v_r) / r_hat;
-        let d = input.damage.get(i).copied().unwrap_or(0.0);
-        let s_tt = input.stress.get(i).map_or(0.0, |s| s.z_axis.z);
-        let sigma_tt = input.coupling.own_factor(d) * s_tt - input.pressure[i];
-        // −σ_θθ ŝ/η along r.
-        let mut a = D::Vector::ZERO;
-        a.set_component(0, -sigma_tt * gauge / (rho * r_hat));
-        out.dv += a;
-        if input.energy == EnergyForm::Study {
-            out.de += sigma_tt * v_r / (rho * r_hat);
-        }
-    }
+    // Each ring's terms are its own: the rings are done in parallel (the same numbers on
+    // any number of threads).
+    rates
+        .par_iter_mut()
+        .enumerate()
+        .zip(hoop_gauge)
+        .for_each(|((i, out), &gauge)| {
+            let (r, h) = (radius(p.position[i]), p.smoothing_length[i]);
+            // R̂ stands for r in every denominator: equal to r beyond one support radius from
+            // the axis, and finite on it.
+            let r_hat = input.smoothed_radius.at(r, h);
+            let rho = p.density[i];
+            let v_r = p.velocity[i].component(0);
+            // η = ρ R̂: dρ/dt = (dη/dt − ρ R̂' v_r)/R̂.
+            out.drho = (out.drho - rho * input.smoothed_radius.slope(r, h) * v_r) / r_hat;
+            let d = input.damage.get(i).copied().unwrap_or(0.0);
+            let s_tt = input.stress.get(i).map_or(0.0, |s| s.z_axis.z);
+            let sigma_tt = input.coupling.own_factor(d) * s_tt - input.pressure[i];
+            // −σ_θθ ŝ/η along r.
+            let mut a = D::Vector::ZERO;
+            a.set_component(0, -sigma_tt * gauge / (rho * r_hat));
+            out.dv += a;
+            if input.energy == EnergyForm::Study {
+                out.de += sigma_tt * v_r / (rho * r_hat);
+            }
+        });
 }
 
 /// The hoop strain rate L_θθ = v_r/R̂ of particle i (R̂ for r, finite on the axis), which
@@ -187,10 +194,13 @@ pub(crate) struct SmoothedRadius {
 
 impl SmoothedRadius {
     /// Tabulates f for the 2-D kernel `w(x, z)` of unit support radius.
-    pub(crate) fn new(w: impl Fn(f64, f64) -> f64) -> Self {
+    pub(crate) fn new(w: impl Fn(f64, f64) -> f64 + Sync) -> Self {
         let (nq, nu) = (201, 400);
         let du = 2.0 / nu as f64;
+        // 32 M kernel values, at the start of every RZ run: the rows of the table in
+        // parallel, each summed in its own fixed order.
         let table = (0..nq)
+            .into_par_iter()
             .map(|k| {
                 let q = k as f64 / (nq - 1) as f64;
                 let (mut num, mut den) = (0.0, 0.0);

@@ -1,6 +1,7 @@
 //! The kernel as a pair sees it: symmetrised over the two particles' supports, with
 //! scalar h or ASPH tensors H, chosen once per run and monomorphised.
 
+use rayon::prelude::*;
 use sph_core::{Dimension, Tensor, Vector};
 use sph_kernel::Kernel;
 
@@ -9,6 +10,11 @@ use sph_kernel::Kernel;
 pub(crate) trait PairKernel<D: Dimension>: Sync {
     /// W̄ for separation r = x_i − x_j.
     fn w(&self, i: usize, j: usize, r: D::Vector) -> f64;
+    /// W̄ when |r| is already known.
+    fn w_dist(&self, i: usize, j: usize, r: D::Vector, dist: f64) -> f64 {
+        let _ = dist;
+        self.w(i, j, r)
+    }
     /// ∇_i W̄.
     fn grad(&self, i: usize, j: usize, r: D::Vector) -> D::Vector;
     /// ∇_i W̄ when |r| is already known.
@@ -58,10 +64,14 @@ impl<'a, K: Kernel> ScalarPairKernel<'a, K> {
     /// Precomputes the factors for `dim` dimensions.
     pub fn new(kernel: K, h: &'a [f64], dim: usize) -> Self {
         let sigma = kernel.sigma(dim);
-        let inv_h: Vec<f64> = h.iter().map(|h| 1.0 / h).collect();
-        let w_norm = inv_h.iter().map(|ih| sigma * ih.powi(dim as i32)).collect();
+        // Once per stage over every particle and ghost: in parallel (the same numbers).
+        let inv_h: Vec<f64> = h.par_iter().map(|h| 1.0 / h).collect();
+        let w_norm = inv_h
+            .par_iter()
+            .map(|ih| sigma * ih.powi(dim as i32))
+            .collect();
         let g_norm = inv_h
-            .iter()
+            .par_iter()
             .map(|ih| sigma * ih.powi(dim as i32 + 1))
             .collect();
         Self {
@@ -97,7 +107,10 @@ impl<K: Kernel> ScalarPairKernel<'_, K> {
 impl<D: Dimension, K: Kernel> PairKernel<D> for ScalarPairKernel<'_, K> {
     #[inline(always)]
     fn w(&self, i: usize, j: usize, r: D::Vector) -> f64 {
-        let d = r.norm();
+        <Self as PairKernel<D>>::w_dist(self, i, j, r, r.norm())
+    }
+    #[inline(always)]
+    fn w_dist(&self, i: usize, j: usize, _r: D::Vector, d: f64) -> f64 {
         0.5 * (self.kernel.f(d * self.inv_h[i]) * self.w_norm[i]
             + self.kernel.f(d * self.inv_h[j]) * self.w_norm[j])
     }

@@ -296,7 +296,8 @@ pub(crate) struct Extended<'a, D: Dimension> {
     /// for the pairs' projected coupling; empty unless some material's damage is a
     /// tensor ([`Self::set_damage_tensor`]).
     pub damage_tensor: Vec<sph_core::glam::DMat3>,
-    /// Artificial-stress tensor R (empty when the artificial stress is off).
+    /// Artificial-stress tensor R, in RZ weighted as R (1/r) the way the pair term reads
+    /// it (once per particle, not per pair); empty when the artificial stress is off.
     pub astress: Vec<D::Tensor>,
     /// Whether each particle's artificial-stress tensor R has a nonzero entry, ghosts
     /// included (empty when the artificial stress is off): in Cartesian runs a pair of

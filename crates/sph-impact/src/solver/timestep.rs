@@ -88,3 +88,45 @@ pub fn acceleration_vote(
         reason: REASON_ACCELERATION,
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+    use rayon::prelude::*;
+
+    proptest! {
+        /// The stage's vote is reduced in parallel (`Simulation::vote`): with `min`
+        /// keeping the earlier vote on a tie, any grouping of the particles gives the
+        /// serial loop's vote, its particle and reason included. The steps are drawn from
+        /// a few values so that ties are common; some are infinite (no vote cast).
+        #[test]
+        fn the_parallel_vote_is_the_serial_one(
+            steps in proptest::collection::vec((0_usize..6, 0_usize..3), 0..400),
+            threads in 1_usize..5,
+        ) {
+            let values = [1e-9, 2e-9, 2e-9, 5e-8, f64::INFINITY, 1e-9];
+            let reasons = [REASON_CFL, REASON_DENSITY, REASON_ACCELERATION];
+            let votes: Vec<TimestepVote> = steps
+                .iter()
+                .enumerate()
+                .map(|(id, &(v, r))| TimestepVote {
+                    dt: values[v],
+                    particle_id: id as u64,
+                    reason: reasons[r],
+                })
+                .collect();
+            let none = TimestepVote { dt: f64::INFINITY, particle_id: 0, reason: REASON_NONE };
+            let serial = votes.iter().fold(none, |best, &v| best.min(v));
+            let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).build().unwrap();
+            let parallel = pool.install(|| {
+                votes
+                    .par_iter()
+                    .with_max_len(7)
+                    .map(|&v| none.min(v))
+                    .reduce(|| none, TimestepVote::min)
+            });
+            prop_assert_eq!(parallel, serial);
+        }
+    }
+}

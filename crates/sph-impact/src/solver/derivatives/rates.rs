@@ -412,8 +412,7 @@ fn rates_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
                 pk,
                 &astress,
                 (i, j),
-                (ri, rj),
-                r,
+                (r, dist),
                 r_hat,
                 g,
                 // f_ij for the hoop force only where a side has one: a row whose

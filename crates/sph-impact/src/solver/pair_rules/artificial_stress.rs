@@ -10,9 +10,10 @@ use sph_core::{Dimension, Tensor, Vector};
 use sph_riemann::ArtificialStress;
 
 /// (the artificial-stress force per unit partner mass, f_ij) of the pair (i, j) with
-/// r = x_i − x_j, r̂, the kernel gradient `g` and the RZ weights r_i, r_j (1 in
-/// Cartesian runs); f_ij is 0 where R_i + R_j vanishes unless `hoop` (RZ: a side has a
-/// hoop component R_θθ, whose force needs f_ij; `rates`' finish).
+/// r = x_i − x_j, |r|, r̂ and the kernel gradient `g` (in RZ each R is read already
+/// weighted by 1/r, `Extended::astress`); f_ij is 0 where R_i + R_j vanishes unless
+/// `hoop` (RZ: a side has a hoop component R_θθ, whose force needs f_ij; `rates`'
+/// finish).
 #[inline(always)]
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn artificial_stress<D: Dimension, P: PairKernel<D>, const RZ: bool>(
@@ -20,8 +21,7 @@ pub(crate) fn artificial_stress<D: Dimension, P: PairKernel<D>, const RZ: bool>(
     pk: &P,
     astress: &ArtificialStress,
     (i, j): (usize, usize),
-    (ri, rj): (f64, f64),
-    r: D::Vector,
+    (r, dist): (D::Vector, f64),
     r_hat: D::Vector,
     g: D::Vector,
     hoop: bool,
@@ -31,10 +31,11 @@ pub(crate) fn artificial_stress<D: Dimension, P: PairKernel<D>, const RZ: bool>(
     if !RZ && !ext.astress_on[i] && !ext.astress_on[j] {
         return (D::Vector::ZERO, 0.0);
     }
-    let r_sum = ext.astress[i] * (1.0 / ri) + ext.astress[j] * (1.0 / rj);
+    // In RZ the extended state holds R/r (stage.rs), computed once per particle.
+    let r_sum = ext.astress[i] + ext.astress[j];
     if r_sum.double_dot(&r_sum) > 0.0 || (RZ && hoop) {
         let dp = 0.5 * (ext.spacing0[i] + ext.spacing0[j]);
-        let f = astress.kernel_factor(pk.w(i, j, r) / pk.w_at(i, j, r_hat, dp));
+        let f = astress.kernel_factor(pk.w_dist(i, j, r, dist) / pk.w_at(i, j, r_hat, dp));
         (r_sum.mul_vec(g) * f, f)
     } else if RZ {
         // The zero force with the signs of zero that the product with f ≥ 0 gives, so

@@ -224,11 +224,11 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
         }
         let rz = self.scheme.geometry == Geometry::Axisymmetric;
         if rz {
-            ext.radius = ext.position.iter().map(|x| radius(*x)).collect();
+            ext.radius = ext.position.par_iter().map(|x| radius(*x)).collect();
             let table = self.smoothed_radius.as_ref().expect("RZ has the table");
             ext.smoothed_radius = ext
                 .radius
-                .iter()
+                .par_iter()
                 .zip(&ext.h)
                 .map(|(&r, &h)| table.at(r, h))
                 .collect();
@@ -242,15 +242,19 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
             // The artificial stress' Δp is the ring's (r, z) spacing at its present radius
             // (a mirror or wall ghost has its source's: it stands for the same area).
             if !self.scheme.artificial_stress.is_off() {
-                for k in 0..ext.position.len() {
-                    let src = ext.source[k] as usize;
-                    ext.spacing0[k] = reference_spacing(
-                        state.spacing0[src],
-                        self.radius0[src],
-                        ext.radius[src],
-                        self.scheme.h_max_factor,
-                    );
-                }
+                let (source, radius) = (&ext.source, &ext.radius);
+                ext.spacing0
+                    .par_iter_mut()
+                    .zip(source)
+                    .for_each(|(spacing, &src)| {
+                        let src = src as usize;
+                        *spacing = reference_spacing(
+                            state.spacing0[src],
+                            self.radius0[src],
+                            radius[src],
+                            self.scheme.h_max_factor,
+                        );
+                    });
             }
         }
         let rows = self
@@ -353,6 +357,12 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
             ext.astress_on = ext.astress.iter().map(|r| *r != D::Tensor::ZERO).collect();
             if self.scheme.geometry == Geometry::Axisymmetric {
                 ext.astress_hoop = artificial_stress_hoops(&ext, &self.scheme.artificial_stress);
+                // The pair term weighs each R by 1/r like the stress (axisymmetric.rs).
+                let radius = &ext.radius;
+                ext.astress
+                    .par_iter_mut()
+                    .zip(radius)
+                    .for_each(|(r_k, &w)| *r_k = *r_k * (1.0 / w));
             }
         }
         let t2 = Instant::now();
@@ -426,6 +436,7 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
             Vec::new()
         } else {
             (0..state.particles.len())
+                .into_par_iter()
                 .map(|i| self.spacing(state, i) * crack_length)
                 .collect()
         };
@@ -485,25 +496,32 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
     /// The smallest time-step vote of a stage.
     pub(super) fn vote(&self, state: &State<D>, stage: &Stage<D>) -> TimestepVote {
         let p = &state.particles;
-        let mut best = TimestepVote {
+        let none = TimestepVote {
             dt: f64::INFINITY,
             particle_id: 0,
             reason: crate::solver::timestep::REASON_NONE,
         };
-        for i in 0..p.len() {
-            let dx = self.spacing(state, i);
-            let r = &stage.rates[i];
-            best = best.min(density_vote(self.scheme.cfl, p.density[i], r.drho, p.id[i]));
-            // For a solid the signal is the longitudinal wave: c_L² = c² + 4G/(3ρ) (paper §2.5).
-            let c_signal = sph_damage::longitudinal_speed(
-                stage.sound_speed[i],
-                stage.shear_modulus[i],
-                p.density[i],
-            );
-            best = best.min(cfl_vote(self.scheme.cfl, dx, c_signal, r.approach, p.id[i]));
-            best = best.min(acceleration_vote(self.scheme.cfl, dx, r.dv.norm(), p.id[i]));
-        }
-        best
+        // In parallel, reduced in particle order: `min` keeps the earlier vote on a tie
+        // and is associative, so the vote (its particle and reason too) is the serial
+        // loop's on any number of threads.
+        (0..p.len())
+            .into_par_iter()
+            .map(|i| {
+                let dx = self.spacing(state, i);
+                let r = &stage.rates[i];
+                let mut best =
+                    none.min(density_vote(self.scheme.cfl, p.density[i], r.drho, p.id[i]));
+                // For a solid the signal is the longitudinal wave: c_L² = c² + 4G/(3ρ)
+                // (paper §2.5).
+                let c_signal = sph_damage::longitudinal_speed(
+                    stage.sound_speed[i],
+                    stage.shear_modulus[i],
+                    p.density[i],
+                );
+                best = best.min(cfl_vote(self.scheme.cfl, dx, c_signal, r.approach, p.id[i]));
+                best.min(acceleration_vote(self.scheme.cfl, dx, r.dv.norm(), p.id[i]))
+            })
+            .reduce(|| none, TimestepVote::min)
     }
 
     /// Shear modulus of every particle (0 for fluids, and for everything when no
@@ -546,6 +564,7 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
         }
         let rho = &s.particles.density;
         (0..s.particles.len())
+            .into_par_iter()
             .map(|i| {
                 let rho_c2 = rho[i] * sound_speed[i] * sound_speed[i];
                 sph_damage::decoupling::past_adhesion(pressure[i], damage[i], rho_c2)
@@ -561,7 +580,7 @@ pub(super) fn longitudinal_speeds(
     density: &[f64],
 ) -> Vec<f64> {
     sound_speed
-        .iter()
+        .par_iter()
         .zip(shear_modulus)
         .zip(density)
         .map(|((&c, &g), &rho)| sph_damage::longitudinal_speed(c, g, rho))
@@ -574,7 +593,7 @@ pub(super) fn damaged_pressures(pressure: &[f64], damage: &[f64]) -> Vec<f64> {
         return pressure.to_vec();
     }
     pressure
-        .iter()
+        .par_iter()
         .zip(damage)
         .map(|(&p, &d)| damaged_pressure(p, d))
         .collect()

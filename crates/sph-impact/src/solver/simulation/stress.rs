@@ -94,13 +94,19 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
                 (ret.stress, y.plastic_strain[i] + dep, dep / dt, pseudo_1)
             })
             .collect();
-        for (i, (s, ep, rate, e_pp)) in updated.into_iter().enumerate() {
-            y.stress[i] = s;
-            y.plastic_strain[i] = ep;
-            y.plastic_strain_rate[i] = rate;
-            if pseudo {
-                y.pseudo_strain[i] = e_pp;
-            }
+        y.stress
+            .par_iter_mut()
+            .zip(&mut y.plastic_strain)
+            .zip(&mut y.plastic_strain_rate)
+            .zip(&updated)
+            .for_each(|(((s, ep), rate), u)| {
+                (*s, *ep, *rate) = (u.0, u.1, u.2);
+            });
+        if pseudo {
+            y.pseudo_strain
+                .par_iter_mut()
+                .zip(&updated)
+                .for_each(|(e_pp, u)| *e_pp = u.3);
         }
     }
 }
