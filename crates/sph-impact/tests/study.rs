@@ -441,6 +441,12 @@ fn a_resolution_scale_on_the_command_line_runs_every_point_at_it() {
     )
     .unwrap();
     assert_eq!(summary["resolution_scale"], 2.0);
+    // The report says the scale the points ran at, beside the file's.
+    let report = std::fs::read_to_string(dir.join("study.md")).unwrap();
+    assert!(
+        report.contains("[run at resolution scale 2.0, the file's 1.0]"),
+        "{report}"
+    );
     // Continued at the file's own scale: refused, not mixed.
     let again = study(&dir, &[]);
     assert_eq!(again.status.code(), Some(2));

@@ -49,7 +49,13 @@ pub struct Study {
     pub references: Vec<Reference>,
     /// The study file's keys and their places (none for a study built in Rust).
     source: Option<SourceMap>,
+    /// The scale before [`Self::set_resolution_scale`] first replaced it (the file's).
+    file_scale: Option<f64>,
 }
+
+/// How the description of a study run at another scale than its file's begins to say so
+/// (`Study::set_resolution_scale`).
+const SCALE_NOTE: &str = "[run at resolution scale ";
 
 /// The study file as written.
 #[derive(Deserialize)]
@@ -106,6 +112,7 @@ impl Study {
             derived: Vec::new(),
             references: Vec::new(),
             source: None,
+            file_scale: None,
         }
     }
 
@@ -170,12 +177,26 @@ impl Study {
     /// Runs every point at `scale` in place of the file's `resolution_scale` (the
     /// command line's `--resolution-scale`): a positive number. A study directory keeps
     /// the scale its points ran at (`points/NNNN/scene.toml`), so continuing it at
-    /// another scale is refused.
+    /// another scale is refused. The description is the file's own words (e.g. "RZ,
+    /// A_res 1 mm"), so where the scale differs from the file's it gains a note of both,
+    /// which the reports and plot titles carry.
     pub fn set_resolution_scale(&mut self, scale: f64) -> Result<(), StudyError> {
         if !(scale.is_finite() && scale > 0.0) {
             return Err(StudyError::bad(format!(
                 "--resolution-scale must be a positive number, not {scale}"
             )));
+        }
+        let file = *self.file_scale.get_or_insert(self.resolution_scale);
+        if let Some(at) = self.description.find(SCALE_NOTE) {
+            self.description.truncate(at);
+            self.description.truncate(self.description.trim_end().len());
+        }
+        if scale != file {
+            if !self.description.is_empty() {
+                self.description.push(' ');
+            }
+            self.description
+                .push_str(&format!("{SCALE_NOTE}{scale:?}, the file's {file:?}]"));
         }
         self.resolution_scale = scale;
         Ok(())
@@ -555,5 +576,38 @@ fn axis_of(p: ParameterFile, i: usize) -> Result<Axis, StudyError> {
             format!("parameter[{i}]"),
             "give the scene key it sets: `path = \"solver.n_target\"`",
         )),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The description names a scale given in place of the file's, once, whatever the
+    /// number of calls, and loses the note when the file's scale is given back.
+    #[test]
+    fn a_scale_in_place_of_the_files_is_noted_once_in_the_description() {
+        let mut study = Study::new("", "scene.toml");
+        study.description = "RZ, A_res 1 mm".to_string();
+        study.set_resolution_scale(2.0).unwrap();
+        assert_eq!(
+            study.description,
+            "RZ, A_res 1 mm [run at resolution scale 2.0, the file's 1.0]"
+        );
+        study.set_resolution_scale(0.5).unwrap();
+        assert_eq!(
+            study.description,
+            "RZ, A_res 1 mm [run at resolution scale 0.5, the file's 1.0]"
+        );
+        study.set_resolution_scale(1.0).unwrap();
+        assert_eq!(study.description, "RZ, A_res 1 mm");
+        let mut bare = Study::new("", "scene.toml");
+        bare.set_resolution_scale(4.0).unwrap();
+        assert_eq!(
+            bare.description,
+            "[run at resolution scale 4.0, the file's 1.0]"
+        );
+        assert!(bare.set_resolution_scale(0.0).is_err());
+        assert_eq!(bare.resolution_scale, 4.0);
     }
 }
