@@ -357,12 +357,6 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
             ext.astress_on = ext.astress.iter().map(|r| *r != D::Tensor::ZERO).collect();
             if self.scheme.geometry == Geometry::Axisymmetric {
                 ext.astress_hoop = artificial_stress_hoops(&ext, &self.scheme.artificial_stress);
-                // The pair term weighs each R by 1/r like the stress (axisymmetric.rs).
-                let radius = &ext.radius;
-                ext.astress
-                    .par_iter_mut()
-                    .zip(radius)
-                    .for_each(|(r_k, &w)| *r_k = *r_k * (1.0 / w));
             }
         }
         let t2 = Instant::now();
@@ -601,7 +595,8 @@ pub(super) fn damaged_pressures(pressure: &[f64], damage: &[f64]) -> Vec<f64> {
 
 /// The artificial-stress tensor R of every particle, ghosts included, from its total
 /// stress σ = (1 − D) S − P_D I (paper §2.3; S itself where damage acts on the yield
-/// strength only).
+/// strength only); in RZ (the rings' radii set) R (1/r), as the pair term weighs it like
+/// the stress (axisymmetric.rs), once per particle rather than per pair.
 pub(super) fn artificial_stress_tensors<D: Dimension>(
     ext: &Extended<'_, D>,
     a: &sph_riemann::ArtificialStress,
@@ -615,7 +610,11 @@ pub(super) fn artificial_stress_tensors<D: Dimension>(
             } else {
                 D::project(&ext.stress(k)) - D::Tensor::IDENTITY * p
             };
-            a.tensor(&sigma, p, ext.density[k])
+            let r = a.tensor(&sigma, p, ext.density[k]);
+            match ext.radius.get(k) {
+                Some(&w) => r * (1.0 / w),
+                None => r,
+            }
         })
         .collect()
 }
