@@ -13,6 +13,7 @@
 //! cargo bench -p sph-benches --bench scenes -- 3d --quick   # 3-D at A_res 2 mm, 2 steps
 //! cargo bench -p sph-benches --bench scenes -- 3d --search  # ten searches, no steps
 //! cargo bench -p sph-benches --bench scenes -- rz --each-step # one search per RK2 step
+//! cargo bench -p sph-benches --bench scenes -- rz --verlet    # a Verlet list
 //! cargo bench -p sph-benches --bench scenes -- 3d --halo    # domains' ghost layers, no steps
 //! cargo bench -p sph-benches --bench scenes -- 3d --halo --study-resolution # at A_res 0.5 mm
 //! cargo bench -p sph-benches --bench scenes -- rz --allocator-defaults # glibc's own settings
@@ -22,8 +23,9 @@
 //! next stage, `sph_benches::keep_freed_memory`); `--allocator-defaults` leaves glibc's
 //! defaults, to measure what that gives.
 //!
-//! `--each-step` sets `[solver] neighbour_search = "each-step"` over the scene's own
-//! settings (`SchemeConfig::neighbour_search`).
+//! `--each-step` and `--verlet` set `[solver] neighbour_search = "each-step"` or
+//! `"verlet"` (its default skin) over the scene's own settings
+//! (`SchemeConfig::neighbour_search`).
 
 use sph_benches::{Counting, LIVE, PEAK, peak_rss};
 use sph_core::{CellList, NeighborSearch, ScalarSupport, regions_of_rows};
@@ -46,8 +48,8 @@ struct Case {
     resolution_scale: f64,
     warm_up: usize,
     steps: usize,
-    /// One neighbour search per RK2 step instead of one per stage.
-    each_step: bool,
+    /// When the neighbour list is built (the scene's own setting: at each stage).
+    search: NeighbourSearch,
 }
 
 /// What one thread count measured.
@@ -128,8 +130,8 @@ fn scene_of(case: &Case) -> Scene {
         .join("../examples/scenes")
         .join(case.file);
     let mut scene = Scene::from_toml_file(&path).expect("scene");
-    if case.each_step {
-        scene.solver.neighbour_search = Some(NeighbourSearch::EachStep);
+    if case.search != NeighbourSearch::EachStage {
+        scene.solver.neighbour_search = Some(case.search);
     }
     scene
 }
@@ -146,10 +148,10 @@ fn run_case(case: &Case) {
         case.resolution_scale,
         case.steps,
         case.warm_up,
-        if case.each_step {
-            "once per step"
-        } else {
-            "at each stage"
+        match case.search {
+            NeighbourSearch::EachStage => "at each stage",
+            NeighbourSearch::EachStep => "once per step",
+            NeighbourSearch::Verlet => "into a Verlet list",
         }
     );
     let mut rates = Vec::new();
@@ -373,7 +375,13 @@ fn main() {
     let halo = args.iter().any(|a| a == "--halo");
     let quick = args.iter().any(|a| a == "--quick");
     let search = args.iter().any(|a| a == "--search");
-    let each_step = args.iter().any(|a| a == "--each-step");
+    let search_mode = if args.iter().any(|a| a == "--verlet") {
+        NeighbourSearch::Verlet
+    } else if args.iter().any(|a| a == "--each-step") {
+        NeighbourSearch::EachStep
+    } else {
+        NeighbourSearch::EachStage
+    };
     // The 3-D scene at the study's own A_res 0.5 mm (1.0 M particles).
     let study = args.iter().any(|a| a == "--study-resolution");
     let want = |name: &str| {
@@ -393,7 +401,7 @@ fn main() {
                 },
                 warm_up: if quick { 1 } else { 2 },
                 steps: if quick { 2 } else { 4 },
-                each_step,
+                search: search_mode,
             },
         ),
         (
@@ -404,7 +412,7 @@ fn main() {
                 resolution_scale: if quick { 0.5 } else { 1.0 },
                 warm_up: 20,
                 steps: if quick { 50 } else { 400 },
-                each_step,
+                search: search_mode,
             },
         ),
     ];

@@ -122,6 +122,22 @@ fn a_resumed_run_with_one_search_per_step_repeats_the_uninterrupted_one() {
     resumed_repeats_whole(&scene, "each-step", 1);
 }
 
+/// With a Verlet list (`neighbour_search = "verlet"`): a checkpoint holds no list, so the
+/// resumed run searches at its first step where the whole run kept its list; the list
+/// gives every stage the pairs of a search of its own (simulation/verlet.rs), so the two
+/// still agree to the bit.
+#[test]
+fn a_resumed_run_with_a_verlet_list_repeats_the_uninterrupted_one() {
+    let text = std::fs::read_to_string(scene_file("smoke_rz.toml")).unwrap();
+    let text = text.replacen("[solver]\n", "[solver]\nneighbour_search = \"verlet\"\n", 1);
+    let scene = Scene::from_toml_str(&text, "smoke_rz.toml").unwrap();
+    assert_eq!(
+        scene.scheme().neighbour_search,
+        sph_impact::solver::NeighbourSearch::Verlet
+    );
+    resumed_repeats_whole(&scene, "verlet", 1);
+}
+
 #[test]
 fn a_finished_run_extended_to_a_later_end_equals_one_run_to_it() {
     let scene = rz_scene();

@@ -227,6 +227,7 @@ fn ranks_give_the_bits_of_one_process_with_every_pass_option() {
             "smoothing = { kind = \"asph\", max_aspect = 4.0 }\n",
         ),
         ("smoke.toml", "neighbour_search = \"each-step\"\n"),
+        ("smoke_rz.toml", "neighbour_search = \"verlet\"\n"),
     ] {
         let text = with_solver_keys(&scene_text(name), keys);
         check(&text, 3, 6);

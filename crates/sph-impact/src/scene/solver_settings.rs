@@ -228,10 +228,14 @@ pub struct SolverSettings {
     /// FSISPH's density stabilisation coefficient (0 off).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub density_stabilization: Option<f64>,
-    /// When the neighbour list is built: `each-stage` (default) or `each-step` (once per
-    /// RK2 step, as Spheral does).
+    /// When the neighbour list is built: `each-stage` (default), `each-step` (once per
+    /// RK2 step, as Spheral does) or `verlet` (a list with a skin, kept while it holds).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub neighbour_search: Option<NeighbourSearch>,
+    /// The Verlet list's skin s, a fraction of each support (`neighbour_search =
+    /// "verlet"` only; default `SchemeConfig::DEFAULT_NEIGHBOUR_SKIN`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub neighbour_skin: Option<f64>,
     /// How Benz–Asphaug flaws are dealt: `3d-count` (default) or `body-count`.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub flaw_dealing: Option<FlawDealing>,
@@ -289,6 +293,9 @@ impl SolverSettings {
         );
         if let Some(z) = self.free_flight_above {
             s.free_flight_above = Some(z);
+        }
+        if let Some(skin) = self.neighbour_skin {
+            s.neighbour_skin = Some(skin);
         }
         if let Some(v) = self.viscosity {
             s.viscosity.alpha = v.alpha.unwrap_or(s.viscosity.alpha);

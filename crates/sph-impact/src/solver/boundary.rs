@@ -127,42 +127,82 @@ impl<D: Dimension> Boundary<D> {
 
     /// Ghosts of the particles `positions[k]` with support radius `radius[k]`.
     pub(crate) fn ghosts(&self, positions: &[D::Vector], radius: &[f64], out: &mut Vec<Ghost<D>>) {
+        out.extend(
+            positions
+                .iter()
+                .zip(radius)
+                .enumerate()
+                .filter_map(|(k, (&x, &r))| self.ghost_of(k, x, r)),
+        );
+    }
+
+    /// Every ghost of particle `source` at `x` that some support radius up to `reach` can
+    /// make, in the order [`Self::ghosts`] would: the one ghost of a wall, and for a
+    /// periodic pair of faces the shifted copies by each face within `reach` (a radius
+    /// up to `reach` makes one of them). A Verlet list places these (Ghosts::Skin in
+    /// solver/state.rs).
+    pub(crate) fn ghosts_within(
+        &self,
+        source: usize,
+        x: D::Vector,
+        reach: f64,
+        out: &mut Vec<Ghost<D>>,
+    ) {
         match *self {
-            Boundary::Wall { point, normal } | Boundary::Contact { point, normal } => {
-                let reflect = D::Tensor::IDENTITY - D::Tensor::outer(normal, normal) * 2.0;
-                // x − 2 n ((x − p)·n) = R x + 2 n (p·n).
-                let offset = normal * (2.0 * point.dot(normal));
-                for (k, &x) in positions.iter().enumerate() {
-                    let d = (x - point).dot(normal);
-                    if d < radius[k] {
+            Boundary::Wall { .. } | Boundary::Contact { .. } => {
+                out.extend(self.ghost_of(source, x, reach));
+            }
+            Boundary::Periodic { axis, lo, hi } => {
+                let period = hi - lo;
+                let c = x.component(axis);
+                for (near, shift) in [(c - lo < reach, period), (hi - c < reach, -period)] {
+                    if near {
+                        let offset = D::Vector::unit(axis) * shift;
                         out.push(Ghost {
-                            source: k,
-                            position: x - normal * (2.0 * d),
-                            map: reflect,
+                            source,
+                            position: x + offset,
+                            map: D::Tensor::IDENTITY,
                             offset,
                         });
                     }
                 }
             }
+        }
+    }
+
+    /// The ghost of particle `source` at `x` with support radius `radius`, if it is
+    /// within that radius of the boundary ([`Self::ghosts`] for one particle: a Verlet
+    /// list asks it of each kept ghost's source, solver/simulation/stage.rs).
+    #[inline]
+    pub(crate) fn ghost_of(&self, source: usize, x: D::Vector, radius: f64) -> Option<Ghost<D>> {
+        match *self {
+            Boundary::Wall { point, normal } | Boundary::Contact { point, normal } => {
+                // x − 2 n ((x − p)·n) = R x + 2 n (p·n).
+                let d = (x - point).dot(normal);
+                (d < radius).then(|| Ghost {
+                    source,
+                    position: x - normal * (2.0 * d),
+                    map: D::Tensor::IDENTITY - D::Tensor::outer(normal, normal) * 2.0,
+                    offset: normal * (2.0 * point.dot(normal)),
+                })
+            }
             Boundary::Periodic { axis, lo, hi } => {
                 let period = hi - lo;
-                for (k, &x) in positions.iter().enumerate() {
-                    let c = x.component(axis);
-                    let shift = if c - lo < radius[k] {
-                        period
-                    } else if hi - c < radius[k] {
-                        -period
-                    } else {
-                        continue;
-                    };
-                    let offset = D::Vector::unit(axis) * shift;
-                    out.push(Ghost {
-                        source: k,
-                        position: x + offset,
-                        map: D::Tensor::IDENTITY,
-                        offset,
-                    });
-                }
+                let c = x.component(axis);
+                let shift = if c - lo < radius {
+                    period
+                } else if hi - c < radius {
+                    -period
+                } else {
+                    return None;
+                };
+                let offset = D::Vector::unit(axis) * shift;
+                Some(Ghost {
+                    source,
+                    position: x + offset,
+                    map: D::Tensor::IDENTITY,
+                    offset,
+                })
             }
         }
     }

@@ -166,6 +166,17 @@ pub enum NeighbourSearch {
     /// the half step is missed there, at the support's edge, where W and ∇W vanish. Saves
     /// one of the step's two searches.
     EachStep,
+    /// A Verlet list: the pairs within (1 + s) times the supports, s the skin
+    /// ([`SchemeConfig::neighbour_skin`]), and the ghosts of the particles within that
+    /// reach of a boundary, kept over both stages and over as many steps as the list
+    /// still holds every pair: until, for some particle i, h_i + |Δx_i| + max_j |Δx_j|
+    /// exceeds its reach (1 + s) h_i at the build (Δx the displacement since, h_i its
+    /// present support). The pair passes skip a listed pair beyond both present supports,
+    /// and a ghost that a placement from the present positions would not make, by the
+    /// search's own test, so every stage sees the pairs a search of its own would find,
+    /// in the same order: the results are those of [`Self::EachStage`] to the bit, at
+    /// fewer searches. Scalar supports only (not with ASPH).
+    Verlet,
 }
 
 /// The numerical scheme.
@@ -301,6 +312,12 @@ pub struct SchemeConfig {
     pub free_flight_above: Option<f64>,
     /// When the neighbour list is built ([`NeighbourSearch`]; default: at each stage).
     pub neighbour_search: NeighbourSearch,
+    /// The skin s of a Verlet list ([`NeighbourSearch::Verlet`]): the list holds the pairs
+    /// within (1 + s) times the supports. `None` gives
+    /// [`Self::DEFAULT_NEIGHBOUR_SKIN`]; refused with another `neighbour_search`, which
+    /// would not read it.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub neighbour_skin: Option<f64>,
 }
 
 impl Default for SchemeConfig {
@@ -341,6 +358,7 @@ impl Default for SchemeConfig {
             energy_diffusion: 0.0,
             density_stabilization: 0.0,
             neighbour_search: NeighbourSearch::EachStage,
+            neighbour_skin: None,
         }
     }
 }
@@ -350,6 +368,16 @@ impl SchemeConfig {
     /// reference density has certainly come apart, and no intact or merely cracked
     /// material of an impact (spall plates, crater walls, compressed rock) gets there.
     pub const DEFAULT_FRAGMENT_DENSITY_RATIO: f64 = 0.5;
+
+    /// Default of [`Self::neighbour_skin`] (docs/performance.md, "A Verlet list").
+    pub const DEFAULT_NEIGHBOUR_SKIN: f64 = 0.15;
+
+    /// The skin of the neighbour list: `Some(s)` with [`NeighbourSearch::Verlet`],
+    /// `None` for a list of the exact pairs.
+    pub fn skin(&self) -> Option<f64> {
+        (self.neighbour_search == NeighbourSearch::Verlet)
+            .then(|| self.neighbour_skin.unwrap_or(Self::DEFAULT_NEIGHBOUR_SKIN))
+    }
 
     /// Checks ranges; the error names the field.
     pub fn validate(&self) -> Result<(), crate::SolverError> {
@@ -468,6 +496,25 @@ impl SchemeConfig {
         {
             return bad("smoothing.max_aspect", max_aspect, "must be ≥ 1");
         }
+        if let Some(skin) = self.neighbour_skin {
+            if self.neighbour_search != NeighbourSearch::Verlet {
+                return bad(
+                    "neighbour_skin",
+                    skin,
+                    "is read only with neighbour_search = \"verlet\"",
+                );
+            }
+            if !(skin > 0.0 && skin <= 2.0) {
+                return bad("neighbour_skin", skin, "must be in (0, 2]");
+            }
+        }
+        if let (Some(skin), SmoothingMode::Asph { .. }) = (self.skin(), self.smoothing) {
+            return bad(
+                "neighbour_skin",
+                skin,
+                "a Verlet list needs scalar supports: not with smoothing kind = \"asph\"",
+            );
+        }
         Ok(())
     }
 }
@@ -533,5 +580,39 @@ mod tests {
         s.n_target = MAX_N_TARGET;
         s.artificial_stress.exponent = MAX_ARTIFICIAL_STRESS_EXPONENT;
         s.validate().unwrap();
+    }
+
+    /// A skin is read by the Verlet list only, in (0, 2], and with scalar supports; the
+    /// Verlet list without one takes the default.
+    #[test]
+    fn a_skin_is_refused_where_no_verlet_list_reads_it() {
+        assert_eq!(
+            refused(|s| s.neighbour_skin = Some(0.2)),
+            ("neighbour_skin", 0.2)
+        );
+        let verlet = |s: &mut SchemeConfig| s.neighbour_search = NeighbourSearch::Verlet;
+        for bad in [0.0, -0.1, 2.5, f64::NAN, f64::INFINITY] {
+            let (f, v) = refused(|s| {
+                verlet(s);
+                s.neighbour_skin = Some(bad);
+            });
+            assert_eq!(f, "neighbour_skin");
+            assert!(v == bad || (v.is_nan() && bad.is_nan()));
+        }
+        let (f, v) = refused(|s| {
+            verlet(s);
+            s.smoothing = SmoothingMode::Asph { max_aspect: 4.0 };
+        });
+        assert_eq!(
+            (f, v),
+            ("neighbour_skin", SchemeConfig::DEFAULT_NEIGHBOUR_SKIN)
+        );
+        let mut s = SchemeConfig::default();
+        assert_eq!(s.skin(), None);
+        verlet(&mut s);
+        assert_eq!(s.skin(), Some(SchemeConfig::DEFAULT_NEIGHBOUR_SKIN));
+        s.neighbour_skin = Some(2.0);
+        s.validate().unwrap();
+        assert_eq!(s.skin(), Some(2.0));
     }
 }

@@ -45,8 +45,10 @@ mod checkpoint;
 mod smoothing;
 mod stage;
 mod stress;
+mod verlet;
 pub use checkpoint::SolverCheckpoint;
-use stage::{Stage, eos_pass};
+use stage::{Stage, Topology, eos_pass};
+use verlet::SkinBuild;
 
 /// Wall-clock seconds spent per phase, and the work done.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
@@ -74,6 +76,10 @@ pub struct PhaseTimes {
     /// neighbour count is this over `derivative_evaluations`.
     #[serde(default)]
     pub neighbour_entries: u64,
+    /// Neighbour searches made (two per step with a search at each stage, one with
+    /// `neighbour_search = "each-step"`, fewer with a Verlet list).
+    #[serde(default)]
+    pub searches: u64,
 }
 
 impl PhaseTimes {
@@ -178,6 +184,8 @@ pub struct Simulation<D: Dimension, K: Kernel, R: PairRule<D> = NoPairRule> {
     /// fragmented, resident memory 90 bytes per particle above the live peak (solid3d
     /// bench).
     midpoint: State<D>,
+    /// A Verlet list kept for the next stage (`NeighbourSearch::Verlet`).
+    kept: Option<Topology<D>>,
 }
 
 impl<D: Dimension, K: Kernel> Simulation<D, K> {
@@ -302,6 +310,7 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
             block_costs: Vec::new(),
             flight: FreeFlight::default(),
             midpoint: State::default(),
+            kept: None,
         })
     }
 
@@ -331,6 +340,7 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
             block_costs: self.block_costs,
             flight: self.flight,
             midpoint: self.midpoint,
+            kept: self.kept,
         }
     }
 }
@@ -519,9 +529,11 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
     pub fn step_over(&mut self, max_dt: f64, ranks: &dyn Ranks) -> Result<StepInfo, SolverError> {
         let mut s0_state = std::mem::take(&mut self.state);
         // One search per step (NeighbourSearch::EachStep): the first stage keeps its list
-        // and ghosts for the second.
-        let per_step = self.scheme.neighbour_search == NeighbourSearch::EachStep;
-        let (s0, topology) = match self.stage(&mut s0_state, None, per_step, ranks) {
+        // and ghosts for the second. A Verlet list is kept while it holds.
+        let search = self.scheme.neighbour_search;
+        let kept = self.verlet_list_for(&s0_state);
+        let keep = search != NeighbourSearch::EachStage;
+        let (s0, topology) = match self.stage(&mut s0_state, kept, keep, ranks) {
             Ok(stage) => stage,
             Err(e) => return Err(self.put_back(s0_state, e)),
         };
@@ -590,12 +602,20 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
         // its own (peak memory per particle).
         drop(s0);
         self.timings.integration += t0.elapsed().as_secs_f64();
-        let stage = self.stage(&mut half, topology, false, ranks);
+        let verlet = search == NeighbourSearch::Verlet;
+        let reuse = if verlet {
+            self.kept = topology;
+            self.verlet_list_for(&half)
+        } else {
+            topology
+        };
+        let stage = self.stage(&mut half, reuse, verlet, ranks);
         half.swap_constants(&mut s0_state);
-        let (s1, _) = match stage {
+        let (s1, kept) = match stage {
             Ok(stage) => stage,
             Err(e) => return Err(self.put_back(s0_state, e)),
         };
+        self.kept = kept;
         let t1 = Instant::now();
         let mut next = s0_state;
         // The step's start plastic strain, for shear failure's Δε_p (only when in use).
@@ -676,6 +696,15 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
             vote,
             boundary_corrections: corrections,
         })
+    }
+
+    /// The kept Verlet list, taken, if it holds for `state` (simulation/verlet.rs);
+    /// `None` otherwise and without a Verlet list.
+    fn verlet_list_for(&mut self, state: &State<D>) -> Option<Topology<D>> {
+        let skin = self.scheme.skin()?;
+        let kept = self.kept.take()?;
+        let build = kept.skin.as_ref()?;
+        build.holds(skin, state, &self.boundaries).then_some(kept)
     }
 
     /// Puts the step's start state back (an error before the update) and passes the

@@ -2,7 +2,7 @@
 
 use crate::solver::boundary::{Boundary, Ghost};
 use serde::{Deserialize, Serialize};
-use sph_core::{Dimension, Particles, Permutation, Tensor};
+use sph_core::{Dimension, Particles, Permutation, Tensor, Vector};
 
 /// What the integrator evolves: the particles (x, v, m, ρ, e, h, material, id), the
 /// ASPH tensors when in use, and the initial spacing (for the artificial stress).
@@ -326,13 +326,22 @@ pub(crate) struct Extended<'a, D: Dimension> {
     /// The ghosts as placed, in order, when [`Ghosts::Place`] asked to record them: what
     /// [`Ghosts::Replay`] places again from the sources' later positions.
     pub placed: Vec<PlacedGhost<D>>,
+    /// With a Verlet list's ghosts ([`Ghosts::Skin`]): whether each particle is real or a
+    /// ghost that a placement from the present positions and supports would make. Empty
+    /// otherwise: every particle is.
+    live: Vec<bool>,
+    /// Whether the ghosts are a Verlet list's (not every one live): its pairs are picked
+    /// with [`Self::interacts`] for the pair passes.
+    pub skin: bool,
 }
 
-/// A ghost as [`Extended::build`] placed it, and whether its boundary only pushes.
+/// A ghost as [`Extended::build`] placed it, whether its boundary only pushes, and which
+/// boundary (its index in the simulation's) made it.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct PlacedGhost<D: Dimension> {
     pub ghost: Ghost<D>,
     pub unilateral: bool,
+    pub boundary: usize,
 }
 
 /// How [`Extended::build`] makes the ghosts.
@@ -345,6 +354,16 @@ pub(crate) enum Ghosts<'p, D: Dimension> {
     /// sources' present positions: the ghost indices of a neighbour list built then stay
     /// valid (`SchemeConfig::neighbour_search`).
     Replay(&'p [PlacedGhost<D>]),
+    /// A Verlet list's ghosts (`NeighbourSearch::Verlet`): with `plan` `None`, every
+    /// boundary's ghosts of the particles within `reach` of it (recorded in
+    /// [`Extended::placed`]); with a plan, its ghosts again, in its order. Each ghost is
+    /// live where its source is (a real particle always) and the boundary would make it
+    /// of the source's present position with the present support; a live ghost stands
+    /// where that placement puts it, to the bit.
+    Skin {
+        plan: Option<&'p [PlacedGhost<D>]>,
+        reach: &'p [f64],
+    },
 }
 
 impl<'a, D: Dimension> Extended<'a, D> {
@@ -381,6 +400,25 @@ impl<'a, D: Dimension> Extended<'a, D> {
     #[inline]
     pub fn is_unilateral(&self, k: usize) -> bool {
         k >= self.n_real && self.ghost_unilateral[k - self.n_real]
+    }
+
+    /// Whether the pair (i, j) of a Verlet list interacts at this stage ([`Self::skin`]):
+    /// where a search of the present supports would list it, by that search's own test
+    /// (`sph_core::ScalarSupport`: |x_i − x_j|² < max(h_i, h_j)²), between live
+    /// particles. Without branches, for `NeighborList::retain_pairs`: about a sixth of a
+    /// Verlet row fails, in no order a branch predictor could learn.
+    #[inline(always)]
+    pub fn interacts(&self, i: usize, j: usize) -> bool {
+        let s = self.h[i].max(self.h[j]);
+        let near = Vector::norm_squared(self.position[i] - self.position[j]) < s * s;
+        near & self.is_live(i) & self.is_live(j)
+    }
+
+    /// Whether particle k is real or a live ghost (every particle without a Verlet
+    /// list's ghosts).
+    #[inline]
+    fn is_live(&self, k: usize) -> bool {
+        self.live.get(k).is_none_or(|&l| l)
     }
 
     /// The map of particle k's vectors from its source's (identity for real particles).
@@ -440,18 +478,21 @@ impl<'a, D: Dimension> Extended<'a, D> {
             radius: Vec::new(),
             smoothed_radius: Vec::new(),
             placed: Vec::new(),
+            live: Vec::new(),
+            skin: false,
         };
         let mut radius = support.to_vec();
         match ghosts {
             Ghosts::Place { record } => {
                 let mut made: Vec<Ghost<D>> = Vec::new();
-                for b in boundaries {
+                for (index, b) in boundaries.iter().enumerate() {
                     made.clear();
                     b.ghosts(&ext.position, &radius, &mut made);
                     for g in &made {
                         let placed = PlacedGhost {
                             ghost: *g,
                             unilateral: b.is_unilateral(),
+                            boundary: index,
                         };
                         ext.push_ghost(&placed, &mut radius);
                         if record {
@@ -464,9 +505,59 @@ impl<'a, D: Dimension> Extended<'a, D> {
                 for p in plan {
                     let placed = PlacedGhost {
                         ghost: p.ghost.moved_to(ext.position[p.ghost.source]),
-                        unilateral: p.unilateral,
+                        ..*p
                     };
                     ext.push_ghost(&placed, &mut radius);
+                }
+            }
+            Ghosts::Skin { plan, reach } => {
+                ext.skin = true;
+                ext.live = vec![true; n];
+                let plan = match plan {
+                    Some(plan) => plan.to_vec(),
+                    None => {
+                        // Placed with the reach, in the order Ghosts::Place would: each
+                        // boundary over the particles and the ghosts made before it.
+                        let mut reach = reach.to_vec();
+                        let mut plan: Vec<PlacedGhost<D>> = Vec::new();
+                        let mut made = Vec::new();
+                        for (index, b) in boundaries.iter().enumerate() {
+                            let placed = plan.len();
+                            for k in 0..n + placed {
+                                let x = match k.checked_sub(n) {
+                                    None => ext.position[k],
+                                    Some(g) => plan[g].ghost.position,
+                                };
+                                made.clear();
+                                b.ghosts_within(k, x, reach[k], &mut made);
+                                for &ghost in &made {
+                                    reach.push(reach[k]);
+                                    plan.push(PlacedGhost::<D> {
+                                        ghost,
+                                        unilateral: b.is_unilateral(),
+                                        boundary: index,
+                                    });
+                                }
+                            }
+                        }
+                        plan
+                    }
+                };
+                for p in &plan {
+                    let s = p.ghost.source;
+                    let x = ext.position[s];
+                    // Live where its source is and the boundary would place it now; the
+                    // others follow their source and take no part in any pair.
+                    let fresh = boundaries[p.boundary]
+                        .ghost_of(s, x, radius[s])
+                        .filter(|g| g.offset == p.ghost.offset && ext.is_live(s));
+                    ext.live.push(fresh.is_some());
+                    let placed = PlacedGhost {
+                        ghost: fresh.unwrap_or_else(|| p.ghost.moved_to(x)),
+                        ..*p
+                    };
+                    ext.push_ghost(&placed, &mut radius);
+                    ext.placed.push(placed);
                 }
             }
         }

@@ -22,12 +22,15 @@ pub(super) struct Stage<D: Dimension> {
 }
 
 /// A stage's neighbour list and the ghosts its indices count, kept for the step's second
-/// stage when the list is built once per step ([`NeighbourSearch::EachStep`]).
+/// stage when the list is built once per step ([`NeighbourSearch::EachStep`]), or for as
+/// long as it holds with a Verlet list ([`NeighbourSearch::Verlet`]).
 pub(super) struct Topology<D: Dimension> {
     list: NeighborList,
     ghosts: Vec<PlacedGhost<D>>,
     /// Each rank's blocks, whose rows the list holds (solver/ranks.rs).
     shares: Vec<Range<usize>>,
+    /// A Verlet list's build (simulation/verlet.rs); `None` for a list of exact pairs.
+    pub(super) skin: Option<SkinBuild<D>>,
 }
 
 impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
@@ -145,9 +148,10 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
     }
 
     /// Derivatives of `state`. With `reuse`, the neighbour list and ghosts of an earlier
-    /// stage of this step are used (the ghosts placed again from their sources' present
-    /// positions) instead of a new search; with `keep`, this stage's are returned for
-    /// such reuse.
+    /// stage are used (the ghosts placed again from their sources' present positions)
+    /// instead of a new search; with `keep`, this stage's are returned for such reuse.
+    /// With a Verlet list (`SchemeConfig::skin`) a kept list is searched with the skin
+    /// and a reused one must hold (`SkinBuild::holds`, checked by the caller).
     pub(super) fn stage(
         &mut self,
         state: &mut State<D>,
@@ -179,6 +183,12 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
         // extended arrays, which are read back for the real particles below.
         drop(pressure);
         let signal = longitudinal_speeds(&sound_speed, &shear_modulus, &state.particles.density);
+        // A Verlet list's skin, where this stage keeps or reuses one.
+        let skin = self.scheme.skin().filter(|_| keep || reuse.is_some());
+        let placement_reach = match (skin, &reuse) {
+            (Some(s), None) => verlet::reach(&support, s),
+            _ => Vec::new(),
+        };
         let mut ext = Extended::build(
             state,
             &state.stress,
@@ -187,11 +197,20 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
             damage,
             &support,
             &self.boundaries,
-            match &reuse {
-                Some(t) => Ghosts::Replay(&t.ghosts),
-                None => Ghosts::Place { record: keep },
+            match (&reuse, skin) {
+                (Some(t), Some(_)) => Ghosts::Skin {
+                    plan: Some(&t.ghosts),
+                    reach: &[],
+                },
+                (None, Some(_)) => Ghosts::Skin {
+                    plan: None,
+                    reach: &placement_reach,
+                },
+                (Some(t), None) => Ghosts::Replay(&t.ghosts),
+                (None, None) => Ghosts::Place { record: keep },
             },
         );
+        drop(placement_reach);
         ext.coupling = self.scheme.stress_coupling;
         if !adhesion.is_empty() {
             ext.adhesion = ext.over_ghosts(adhesion);
@@ -262,8 +281,8 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
             .unwrap_or_else(|| pair_blocks::block_rows(n_real));
         let size = ranks.size();
         let t_search = Instant::now();
-        let (list, shares) = match reuse {
-            Some(t) => (t.list, t.shares),
+        let (list, shares, built) = match reuse {
+            Some(t) => (t.list, t.shares, t.skin),
             None => {
                 let shares = self.shares(n_real, rows, size);
                 // On several ranks each searches the rows of its own blocks (and the
@@ -273,7 +292,14 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
                 } else {
                     0..ext.position.len()
                 };
-                let list = if ext.h_tensor.is_empty() {
+                let list = if let Some(s) = skin {
+                    // Every pair within the reach (1 + s) h: the ghosts' reach is their
+                    // sources', as Ghosts::Skin placed them with.
+                    let reach = verlet::reach(&ext.h, s);
+                    let support = ScalarSupport::new(&reach)?;
+                    self.search
+                        .neighbors_of_rows(&ext.position, &support, mine)?
+                } else if ext.h_tensor.is_empty() {
                     let support = ScalarSupport::new(&ext.h)?;
                     self.search
                         .neighbors_of_rows(&ext.position, &support, mine)?
@@ -296,30 +322,38 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
                         .map(|&c| c as u64)
                         .collect();
                 }
-                (list, shares)
+                self.timings.searches += 1;
+                let built = skin.map(|s| SkinBuild::new(s, state, &self.boundaries));
+                (list, shares, built)
             }
         };
+        // A Verlet list's pairs of this stage, picked for the passes (simulation/verlet.rs);
+        // the list itself is kept as searched.
+        let picked = ext
+            .skin
+            .then(|| list.retain_pairs(|i, j| ext.interacts(i, j as usize)));
+        let pairs = picked.as_ref().unwrap_or(&list);
         let search = t_search.elapsed().as_secs_f64();
         // The neighbours listed for the real particles (on several ranks from the blocks'
         // costs, since each rank's list holds its own rows only).
         let entries = if size > 1 {
             self.block_costs.iter().sum::<u64>() - n_real as u64
         } else {
-            (0..n_real).map(|i| list.count(i) as u64).sum::<u64>()
+            (0..n_real).map(|i| pairs.count(i) as u64).sum::<u64>()
         };
         if self.scheme.density == DensityForm::Summation {
             // Density from the positions, then the EOS again with it (real and ghosts).
             let rho = if ext.h_tensor.is_empty() {
                 summation_density(
                     &ext,
-                    &list,
+                    pairs,
                     &ScalarPairKernel::new(self.kernel, &ext.h, D::DIM),
                     self.smoothed_radius.as_ref(),
                 )
             } else {
                 summation_density(
                     &ext,
-                    &list,
+                    pairs,
                     &TensorPairKernel {
                         kernel: self.kernel,
                         h_tensor: &ext.h_tensor,
@@ -377,14 +411,14 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
         let (options, blocks) = (need_grads.then_some(options), (rows, shares.as_slice()));
         let (grads, rates_out, t3, exchange) = if ext.h_tensor.is_empty() {
             let pk = ScalarPairKernel::new(self.kernel, &ext.h, D::DIM);
-            self.pair_passes(&ext, &list, &pk, options, blocks, ranks)
+            self.pair_passes(&ext, pairs, &pk, options, blocks, ranks)
         } else {
             let pk = TensorPairKernel {
                 kernel: self.kernel,
                 h_tensor: &ext.h_tensor,
                 h: &ext.h,
             };
-            self.pair_passes(&ext, &list, &pk, options, blocks, ranks)
+            self.pair_passes(&ext, pairs, &pk, options, blocks, ranks)
         };
         let PairRates {
             each: mut rates_out,
@@ -467,10 +501,12 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
         self.timings.neighbour_entries += entries;
         let mut pressure_d = std::mem::take(&mut ext.pressure);
         pressure_d.truncate(n_real);
+        drop(picked);
         let topology = keep.then(|| Topology {
             list,
             ghosts: std::mem::take(&mut ext.placed),
             shares,
+            skin: built,
         });
         Ok((
             Stage {
