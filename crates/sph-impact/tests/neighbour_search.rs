@@ -11,26 +11,13 @@
 
 mod common;
 
-use common::{gap_of, quarter_smoke_text, scene_text, with_solver_keys};
+use common::{gap_of, smoke_cases, with_solver_keys};
 use sph_core::Dimension;
 use sph_impact::run::{RunOptions, run};
 use sph_impact::scene::{Scene, SceneSimulation};
 use sph_impact::solver::{NeighbourSearch, Simulation};
 use sph_kernel::KernelChoice;
 use std::path::Path;
-
-/// The smoke scenes of every geometry, each with the mirror ghosts of its kind: none in
-/// 3-D, the two symmetry planes of the 3-D quarter, the axis in RZ, the walls of the 1-D
-/// flyer plate.
-fn cases() -> Vec<(&'static str, String)> {
-    vec![
-        ("3d", scene_text("smoke.toml")),
-        ("3d-quarter", quarter_smoke_text()),
-        ("rz", scene_text("smoke_rz.toml")),
-        ("plane", scene_text("smoke_plane.toml")),
-        ("1d", scene_text("flyer_plate_1d.toml")),
-    ]
-}
 
 /// Steps `a` (a search at each stage) and `b` (one per step) `steps` times with the same
 /// time steps and returns their gap.
@@ -51,7 +38,7 @@ fn compare<D: Dimension>(
 
 #[test]
 fn one_search_per_step_stays_close_to_one_per_stage_in_every_geometry() {
-    for (geometry, text) in cases() {
+    for (geometry, text) in smoke_cases() {
         for (scheme, text) in [
             ("scene", text.clone()),
             ("fsisph", with_solver_keys(&text, "preset = \"fsisph\"\n")),
@@ -94,7 +81,7 @@ const TOLERANCE: f64 = 1e-4;
 /// and the same outputs on one thread as on two.
 #[test]
 fn one_search_per_step_conserves_and_repeats_on_any_thread_count() {
-    for (geometry, text) in cases() {
+    for (geometry, text) in smoke_cases() {
         let text = with_solver_keys(&text, "neighbour_search = \"each-step\"\n");
         let scene = Scene::from_toml_str(&text, "scene.toml").unwrap();
         let mut summaries = Vec::new();

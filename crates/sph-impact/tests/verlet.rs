@@ -9,25 +9,12 @@
 
 mod common;
 
-use common::{gas_blob, quarter_smoke_text, scene_text, with_solver_keys};
+use common::{gas_blob, smoke_cases, with_solver_keys};
 use sph_core::Dimension;
 use sph_impact::scene::{Scene, SceneSimulation};
 use sph_impact::solver::{NeighbourSearch, Simulation};
 use sph_impact::{Material, SchemeConfig};
 use sph_kernel::{Kernel, KernelChoice};
-
-/// The smoke scenes of every geometry, each with the mirror ghosts of its kind: none in
-/// 3-D, the two symmetry planes of the 3-D quarter, the axis in RZ, the walls of the 1-D
-/// flyer plate.
-fn cases() -> Vec<(&'static str, String)> {
-    vec![
-        ("3d", scene_text("smoke.toml")),
-        ("3d-quarter", quarter_smoke_text()),
-        ("rz", scene_text("smoke_rz.toml")),
-        ("plane", scene_text("smoke_plane.toml")),
-        ("1d", scene_text("flyer_plate_1d.toml")),
-    ]
-}
 
 /// The state's every field, to the bit (serde_json writes each f64 so that it reads back
 /// the same).
@@ -67,7 +54,7 @@ fn compare<D: Dimension, K: Kernel>(
 fn a_verlet_list_gives_the_bits_of_a_search_at_each_stage_in_every_geometry() {
     let steps = 20;
     let mut rebuilt = 0;
-    for (geometry, text) in cases() {
+    for (geometry, text) in smoke_cases() {
         for (scheme, text) in [
             ("scene", text.clone()),
             ("fsisph", with_solver_keys(&text, "preset = \"fsisph\"\n")),

@@ -326,7 +326,7 @@ pub(crate) struct Extended<'a, D: Dimension> {
     /// The ghosts as placed, in order, when [`Ghosts::Place`] asked to record them: what
     /// [`Ghosts::Replay`] places again from the sources' later positions.
     pub placed: Vec<PlacedGhost<D>>,
-    /// With a Verlet list's ghosts ([`Ghosts::Skin`]): whether each particle is real or a
+    /// With a Verlet list's ghosts ([`Ghosts::SkinPlace`], [`Ghosts::SkinReplay`]): whether each particle is real or a
     /// ghost that a placement from the present positions and supports would make. Empty
     /// otherwise: every particle is.
     live: Vec<bool>,
@@ -354,16 +354,15 @@ pub(crate) enum Ghosts<'p, D: Dimension> {
     /// sources' present positions: the ghost indices of a neighbour list built then stay
     /// valid (`SchemeConfig::neighbour_search`).
     Replay(&'p [PlacedGhost<D>]),
-    /// A Verlet list's ghosts (`NeighbourSearch::Verlet`): with `plan` `None`, every
-    /// boundary's ghosts of the particles within `reach` of it (recorded in
-    /// [`Extended::placed`]); with a plan, its ghosts again, in its order. Each ghost is
-    /// live where its source is (a real particle always) and the boundary would make it
-    /// of the source's present position with the present support; a live ghost stands
-    /// where that placement puts it, to the bit.
-    Skin {
-        plan: Option<&'p [PlacedGhost<D>]>,
-        reach: &'p [f64],
-    },
+    /// A Verlet list's ghosts, placed (`NeighbourSearch::Verlet`): every boundary's ghosts
+    /// of the particles within `reach` of it, in the order of [`Self::Place`], recorded
+    /// in [`Extended::placed`]; each is live as with [`Self::SkinReplay`].
+    SkinPlace { reach: &'p [f64] },
+    /// A Verlet list's ghosts again, in their order. Each ghost is live where its source
+    /// is (a real particle always) and the boundary would make it of the source's present
+    /// position with the present support; a live ghost stands where that placement puts
+    /// it, to the bit.
+    SkinReplay(&'p [PlacedGhost<D>]),
 }
 
 impl<'a, D: Dimension> Extended<'a, D> {
@@ -510,58 +509,42 @@ impl<'a, D: Dimension> Extended<'a, D> {
                     ext.push_ghost(&placed, &mut radius);
                 }
             }
-            Ghosts::Skin { plan, reach } => {
-                ext.skin = true;
-                ext.live = vec![true; n];
-                let plan = match plan {
-                    Some(plan) => plan.to_vec(),
-                    None => {
-                        // Placed with the reach, in the order Ghosts::Place would: each
-                        // boundary over the particles and the ghosts made before it.
-                        let mut reach = reach.to_vec();
-                        let mut plan: Vec<PlacedGhost<D>> = Vec::new();
-                        let mut made = Vec::new();
-                        for (index, b) in boundaries.iter().enumerate() {
-                            let placed = plan.len();
-                            for k in 0..n + placed {
-                                let x = match k.checked_sub(n) {
-                                    None => ext.position[k],
-                                    Some(g) => plan[g].ghost.position,
-                                };
-                                made.clear();
-                                b.ghosts_within(k, x, reach[k], &mut made);
-                                for &ghost in &made {
-                                    reach.push(reach[k]);
-                                    plan.push(PlacedGhost::<D> {
-                                        ghost,
-                                        unilateral: b.is_unilateral(),
-                                        boundary: index,
-                                    });
-                                }
-                            }
-                        }
-                        plan
-                    }
-                };
-                for p in &plan {
-                    let s = p.ghost.source;
-                    let x = ext.position[s];
-                    // Live where its source is and the boundary would place it now; the
-                    // others follow their source and take no part in any pair.
-                    let fresh = boundaries[p.boundary]
-                        .ghost_of(s, x, radius[s])
-                        .filter(|g| g.offset == p.ghost.offset && ext.is_live(s));
-                    ext.live.push(fresh.is_some());
-                    let placed = PlacedGhost {
-                        ghost: fresh.unwrap_or_else(|| p.ghost.moved_to(x)),
-                        ..*p
-                    };
-                    ext.push_ghost(&placed, &mut radius);
-                    ext.placed.push(placed);
-                }
+            Ghosts::SkinPlace { reach } => {
+                let plan = skin_plan(&ext.position, reach, boundaries);
+                ext.place_live(&plan, boundaries, &mut radius);
             }
+            Ghosts::SkinReplay(plan) => ext.place_live(plan, boundaries, &mut radius),
         }
         ext
+    }
+
+    /// Appends a Verlet list's ghosts `plan`, in order, each placed from its source's
+    /// present position and marked live where the boundary would make it now with the
+    /// present support `radius` (and its source is live): [`Ghosts::SkinReplay`].
+    fn place_live(
+        &mut self,
+        plan: &[PlacedGhost<D>],
+        boundaries: &[Boundary<D>],
+        radius: &mut Vec<f64>,
+    ) {
+        self.skin = true;
+        self.live = vec![true; self.n_real];
+        for p in plan {
+            let s = p.ghost.source;
+            let x = self.position[s];
+            // Live where its source is and the boundary would place it now; the others
+            // follow their source and take no part in any pair.
+            let fresh = boundaries[p.boundary]
+                .ghost_of(s, x, radius[s])
+                .filter(|g| g.offset == p.ghost.offset && self.is_live(s));
+            self.live.push(fresh.is_some());
+            let placed = PlacedGhost {
+                ghost: fresh.unwrap_or_else(|| p.ghost.moved_to(x)),
+                ..*p
+            };
+            self.push_ghost(&placed, radius);
+            self.placed.push(placed);
+        }
     }
 
     /// Appends one ghost, its fields copied from its source (`radius` is the support of
@@ -629,6 +612,41 @@ impl<D: Dimension> Extended<'_, D> {
         }
         self.damage_tensor = real;
     }
+}
+
+/// A Verlet list's ghosts of the real particles at `position` with reach `reach`: each
+/// boundary over the particles and the ghosts made before it, in the order of
+/// [`Ghosts::Place`], with every ghost some support up to the reach can make
+/// (`Boundary::ghosts_within`).
+fn skin_plan<D: Dimension>(
+    position: &[D::Vector],
+    reach: &[f64],
+    boundaries: &[Boundary<D>],
+) -> Vec<PlacedGhost<D>> {
+    let n = position.len();
+    let mut reach = reach.to_vec();
+    let mut plan: Vec<PlacedGhost<D>> = Vec::new();
+    let mut made = Vec::new();
+    for (index, b) in boundaries.iter().enumerate() {
+        let placed = plan.len();
+        for k in 0..n + placed {
+            let x = match k.checked_sub(n) {
+                None => position[k],
+                Some(g) => plan[g].ghost.position,
+            };
+            made.clear();
+            b.ghosts_within(k, x, reach[k], &mut made);
+            for &ghost in &made {
+                reach.push(reach[k]);
+                plan.push(PlacedGhost {
+                    ghost,
+                    unilateral: b.is_unilateral(),
+                    boundary: index,
+                });
+            }
+        }
+    }
+    plan
 }
 
 /// An orthogonal map of D dimensions as a 3×3 that leaves the components beyond D alone

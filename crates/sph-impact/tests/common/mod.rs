@@ -38,6 +38,19 @@ pub fn quarter_smoke_text() -> String {
     quarter
 }
 
+/// The smoke scenes of every geometry, each with the mirror ghosts of its kind: none in
+/// 3-D, the two symmetry planes of the 3-D quarter, the axis in RZ, the walls of the 1-D
+/// flyer plate.
+pub fn smoke_cases() -> Vec<(&'static str, String)> {
+    vec![
+        ("3d", scene_text("smoke.toml")),
+        ("3d-quarter", quarter_smoke_text()),
+        ("rz", scene_text("smoke_rz.toml")),
+        ("plane", scene_text("smoke_plane.toml")),
+        ("1d", scene_text("flyer_plate_1d.toml")),
+    ]
+}
+
 /// `text` with `keys` added to its `[solver]` table (made if it has none).
 pub fn with_solver_keys(text: &str, keys: &str) -> String {
     if text.contains("\n[solver]\n") {

@@ -198,12 +198,8 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
             &support,
             &self.boundaries,
             match (&reuse, skin) {
-                (Some(t), Some(_)) => Ghosts::Skin {
-                    plan: Some(&t.ghosts),
-                    reach: &[],
-                },
-                (None, Some(_)) => Ghosts::Skin {
-                    plan: None,
+                (Some(t), Some(_)) => Ghosts::SkinReplay(&t.ghosts),
+                (None, Some(_)) => Ghosts::SkinPlace {
                     reach: &placement_reach,
                 },
                 (Some(t), None) => Ghosts::Replay(&t.ghosts),
@@ -294,7 +290,7 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
                 };
                 let list = if let Some(s) = skin {
                     // Every pair within the reach (1 + s) h: the ghosts' reach is their
-                    // sources', as Ghosts::Skin placed them with.
+                    // sources', as Ghosts::SkinPlace placed them with.
                     let reach = verlet::reach(&ext.h, s);
                     let support = ScalarSupport::new(&reach)?;
                     self.search
