@@ -42,24 +42,47 @@ use std::time::Instant;
 
 mod advance;
 mod checkpoint;
+mod particle_terms;
 mod smoothing;
 mod stage;
 mod stress;
 mod verlet;
 pub use checkpoint::SolverCheckpoint;
+use particle_terms::ParticleTerms;
 use stage::{Stage, Topology, eos_pass};
 use verlet::SkinBuild;
+
+/// Particles per task of the per-particle passes that write several arrays at once
+/// (modules `advance`, `stress`, `particle_terms`, the artificial stresses of `stage`):
+/// small enough to share a few thousand rings between threads, large enough that a
+/// task's bookkeeping is negligible.
+const PASS_CHUNK: usize = 512;
+
+/// `v` by chunks of [`PASS_CHUNK`] as `Some`, or `n_chunks` times `None` when `v` is
+/// empty (an array the run does not have), to be zipped with the chunks of the arrays a
+/// pass always writes.
+fn chunks_or_none<T: Send>(
+    v: &mut [T],
+    n_chunks: usize,
+) -> impl IndexedParallelIterator<Item = Option<&mut [T]>> {
+    if v.is_empty() {
+        rayon::iter::Either::Left((0..n_chunks).into_par_iter().map(|_| None))
+    } else {
+        rayon::iter::Either::Right(v.par_chunks_mut(PASS_CHUNK).map(Some))
+    }
+}
 
 /// Wall-clock seconds spent per phase, and the work done.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
 pub struct PhaseTimes {
     /// The neighbour search itself (`CellList::neighbors`).
     pub neighbours: f64,
-    /// The pair arrays around it: supports, moduli, ghosts, RZ radii, summation density
-    /// and artificial stresses.
+    /// The pair arrays around it: supports, ghosts, RZ radii, summation density and
+    /// artificial stresses.
     #[serde(default)]
     pub setup: f64,
-    /// Equation-of-state evaluations.
+    /// The per-particle terms before the pairs: the equation of state, damage, damaged
+    /// pressures, shear moduli, signal speeds and adhesion flags (one pass).
     pub eos: f64,
     /// Gradient pass.
     pub gradients: f64,

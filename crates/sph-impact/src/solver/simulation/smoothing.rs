@@ -6,65 +6,62 @@
 use super::*;
 
 impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
-    /// Updates the smoothing of `y` (after its density) over a stage of length `dt` with
-    /// `stage`'s rates, evaluated on `rate_state`.
-    pub(super) fn update_smoothing(
+    /// The scalar support of a particle of mass `m` at `x` and density `rho` > 0:
+    /// n_target × its measure^(1/d), capped at h_max_factor × n_target × its initial
+    /// spacing `s0` (the advancing pass, module `advance`, sets it; ASPH scales its
+    /// tensor to it).
+    #[inline]
+    pub(super) fn scalar_support(&self, m: f64, x: D::Vector, rho: f64, s0: f64) -> f64 {
+        let (n_target, cap) = (self.scheme.n_target, self.scheme.h_max_factor);
+        let measure = self.kernel_measure(m, x, rho);
+        // The exponent passes through `black_box`: as a constant ½ it lets LLVM turn
+        // pow into sqrt in 2-D, which differs from glibc's pow in the last bit for about
+        // one argument in a thousand (and then in every later bit of a run). It stays
+        // pow, so results are those of earlier versions to the bit.
+        let exponent = std::hint::black_box(1.0 / D::DIM as f64);
+        (n_target * measure.powf(exponent)).min(cap * n_target * s0)
+    }
+
+    /// Advances the ASPH tensors of `y` (after its density) over a stage of length `dt`
+    /// with `stage`'s rates, evaluated on `rate_state`; a no-op with a scalar support
+    /// (set by the advancing pass).
+    pub(super) fn update_asph(
         &self,
         y: &mut State<D>,
         stage: &Stage<D>,
         dt: f64,
         rate_state: &State<D>,
     ) {
+        let SmoothingMode::Asph { max_aspect } = self.scheme.smoothing else {
+            return;
+        };
         let p = &mut y.particles;
-        let d = D::DIM as f64;
-        let n_target = self.scheme.n_target;
-        match self.scheme.smoothing {
-            SmoothingMode::Scalar => {
-                let (m, rho) = (&p.mass, &p.density);
-                let (s0, cap) = (&y.spacing0, self.scheme.h_max_factor);
-                let x = &p.position;
-                p.smoothing_length
-                    .par_iter_mut()
-                    .enumerate()
-                    .for_each(|(i, h)| {
-                        // The area (or volume) per particle: m/ρ, in RZ the ring's area.
-                        if rho[i] > 0.0 {
-                            let measure = self.kernel_measure(m[i], x[i], rho[i]);
-                            *h = (n_target * measure.powf(1.0 / d)).min(cap * n_target * s0[i]);
-                        }
-                    });
-            }
-            SmoothingMode::Asph { max_aspect } => {
-                let grads = stage.grads.as_ref().expect("ASPH computes gradients");
-                let h_src = &rate_state.h_tensor;
-                let (m, rho) = (&p.mass, &p.density);
-                let (s0, cap) = (&y.spacing0, self.scheme.h_max_factor);
-                let new: Vec<(D::Tensor, f64)> = (0..p.len())
-                    .into_par_iter()
-                    .map(|i| {
-                        // The equivalent radius follows the density as in the scalar
-                        // mode, with the same cap: a particle expanding into vacuum
-                        // would otherwise grow its support without bound.
-                        let target = if rho[i] > 0.0 {
-                            let measure = self.kernel_measure(m[i], p.position[i], rho[i]);
-                            (n_target * measure.powf(1.0 / d)).min(cap * n_target * s0[i])
-                        } else {
-                            1.0 / h_src[i].sym_eigenvalues()[0]
-                        };
-                        asph_update(
-                            &y.h_tensor[i],
-                            &grads.each[i].velocity,
-                            dt,
-                            target,
-                            max_aspect,
-                        )
-                    })
-                    .collect();
-                for (i, (h, radius)) in new.into_iter().enumerate() {
-                    y.h_tensor[i] = h;
-                    p.smoothing_length[i] = radius;
-                }
-            }
+        let grads = stage.grads.as_ref().expect("ASPH computes gradients");
+        let h_src = &rate_state.h_tensor;
+        let (m, rho, s0) = (&p.mass, &p.density, &y.spacing0);
+        let new: Vec<(D::Tensor, f64)> = (0..p.len())
+            .into_par_iter()
+            .map(|i| {
+                // The equivalent radius follows the density as in the scalar mode, with
+                // the same cap: a particle expanding into vacuum would otherwise grow
+                // its support without bound.
+                let target = if rho[i] > 0.0 {
+                    self.scalar_support(m[i], p.position[i], rho[i], s0[i])
+                } else {
+                    1.0 / h_src[i].sym_eigenvalues()[0]
+                };
+                asph_update(
+                    &y.h_tensor[i],
+                    &grads.each[i].velocity,
+                    dt,
+                    target,
+                    max_aspect,
+                )
+            })
+            .collect();
+        for (i, (h, radius)) in new.into_iter().enumerate() {
+            y.h_tensor[i] = h;
+            p.smoothing_length[i] = radius;
         }
     }
 

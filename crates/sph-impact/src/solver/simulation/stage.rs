@@ -160,10 +160,17 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
         ranks: &dyn Ranks,
     ) -> Result<(Stage<D>, Option<Topology<D>>), SolverError> {
         let t0 = Instant::now();
-        let (pressure, mut sound_speed) = eos_pass(&state.particles, &self.materials);
-        let damage = damage_of(state, &self.materials);
-        // The pair terms see the damaged pressure P_D (paper §2).
-        let pressure_d = damaged_pressures(&pressure, &damage);
+        // P, c, D, P_D (which the pair terms see, paper §2), G, c_L and the adhesion
+        // flags, in one pass (simulation/particle_terms.rs).
+        let ParticleTerms {
+            pressure,
+            mut sound_speed,
+            damage,
+            pressure_d,
+            mut shear_modulus,
+            signal,
+            adhesion,
+        } = self.particle_terms(state, None);
         let mut t1 = Instant::now();
         let support: Vec<f64> = if state.h_tensor.is_empty() {
             state.particles.smoothing_length.clone()
@@ -174,15 +181,11 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
                 .map(|h| 1.0 / h.sym_eigenvalues()[0])
                 .collect()
         };
-        // A solid's signal speed in the pair's Riemann problem and viscosity is the
-        // longitudinal wave speed c_L = √(c² + 4G/(3ρ)) (paper §2.1).
-        let mut shear_modulus = self.shear_moduli(state, &pressure);
-        let adhesion = self.adhesion_flags(state, &pressure, &sound_speed, &damage);
         // Only what the pair passes read stays alive through them (peak memory): the
-        // undamaged pressure and the supports are spent, and P_D, c_L and D move into the
-        // extended arrays, which are read back for the real particles below.
+        // undamaged pressure and the supports are spent, and P_D, c_L (a solid's signal
+        // speed in the pair's Riemann problem and viscosity, paper §2.1) and D move into
+        // the extended arrays, which are read back for the real particles below.
         drop(pressure);
-        let signal = longitudinal_speeds(&sound_speed, &shear_modulus, &state.particles.density);
         // A Verlet list's skin, where this stage keeps or reuses one.
         let skin = self.scheme.skin().filter(|_| keep || reuse.is_some());
         let placement_reach = match (skin, &reuse) {
@@ -239,14 +242,18 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
         }
         let rz = self.scheme.geometry == Geometry::Axisymmetric;
         if rz {
-            ext.radius = ext.position.par_iter().map(|x| radius(*x)).collect();
+            // Each particle's radius r and kernel-smoothed radius R̂ (ghosts included),
+            // in one pass.
             let table = self.smoothed_radius.as_ref().expect("RZ has the table");
-            ext.smoothed_radius = ext
-                .radius
+            (ext.radius, ext.smoothed_radius) = ext
+                .position
                 .par_iter()
                 .zip(&ext.h)
-                .map(|(&r, &h)| table.at(r, h))
-                .collect();
+                .map(|(x, &h)| {
+                    let r = radius(*x);
+                    (r, table.at(r, h))
+                })
+                .unzip();
             // A mirror ghost stands for the same area of material as its source, so its
             // ring mass per radian scales with its own radius: ρ A r' (a wall normal to
             // r is a cylinder; the axis and walls normal to z leave r unchanged).
@@ -360,20 +367,15 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
             };
             state.particles.density = rho;
             let t = Instant::now();
-            let pressure;
-            (pressure, sound_speed) = eos_pass(&state.particles, &self.materials);
-            let pressure_d = damaged_pressures(&pressure, &ext.damage[..n_damage]);
-            shear_modulus = self.shear_moduli(state, &pressure);
-            let adhesion =
-                self.adhesion_flags(state, &pressure, &sound_speed, &ext.damage[..n_damage]);
-            if !adhesion.is_empty() {
-                ext.adhesion = ext.over_ghosts(adhesion);
+            let terms = self.particle_terms(state, Some(&ext.damage[..n_damage]));
+            let (pressure_d, signal) = (terms.pressure_d, terms.signal);
+            (sound_speed, shear_modulus) = (terms.sound_speed, terms.shear_modulus);
+            if !terms.adhesion.is_empty() {
+                ext.adhesion = ext.over_ghosts(terms.adhesion);
             }
             if bulk_viscosity {
                 ext.bulk_sound_speed = ext.over_ghosts(sound_speed.clone());
             }
-            let signal =
-                longitudinal_speeds(&sound_speed, &shear_modulus, &state.particles.density);
             t1 += t.elapsed();
             for k in 0..ext.position.len() {
                 let s = ext.source[k] as usize;
@@ -383,11 +385,8 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
             }
         }
         if !self.scheme.artificial_stress.is_off() {
-            ext.astress = artificial_stress_tensors(&ext, &self.scheme.artificial_stress);
-            ext.astress_on = ext.astress.iter().map(|r| *r != D::Tensor::ZERO).collect();
-            if self.scheme.geometry == Geometry::Axisymmetric {
-                ext.astress_hoop = artificial_stress_hoops(&ext, &self.scheme.artificial_stress);
-            }
+            (ext.astress, ext.astress_on, ext.astress_hoop) =
+                artificial_stresses(&ext, &self.scheme.artificial_stress, rz);
         }
         let t2 = Instant::now();
         let need_grads = self.scheme.limiter != sph_riemann::Limiter::None
@@ -549,127 +548,55 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
             })
             .reduce(|| none, TimestepVote::min)
     }
-
-    /// Shear modulus of every particle (0 for fluids, and for everything when no
-    /// material has strength).
-    pub(super) fn shear_moduli(&self, s: &State<D>, pressure: &[f64]) -> Vec<f64> {
-        if s.stress.is_empty() {
-            return vec![0.0; s.particles.len()];
-        }
-        (0..s.particles.len())
-            .into_par_iter()
-            .map(
-                |i| match &self.materials[s.particles.material[i] as usize].strength {
-                    Some(model) => {
-                        let st = self.strength_state(s, i, pressure[i]);
-                        if self.scheme.damaged_moduli {
-                            model.damaged_shear_modulus(&st)
-                        } else {
-                            model.shear_modulus(&st)
-                        }
-                    }
-                    None => 0.0,
-                },
-            )
-            .collect()
-    }
-
-    /// Whether each particle is past its adhesion limit (in tension and damaged,
-    /// sph_damage::decoupling::past_adhesion), from its undamaged pressure, bulk sound
-    /// speed and damage; empty unless fractured material is decoupled
-    /// (`SchemeConfig::decouple_damaged`) and some material has damage.
-    pub(super) fn adhesion_flags(
-        &self,
-        s: &State<D>,
-        pressure: &[f64],
-        sound_speed: &[f64],
-        damage: &[f64],
-    ) -> Vec<bool> {
-        if !self.scheme.decouple_damaged || damage.is_empty() {
-            return Vec::new();
-        }
-        let rho = &s.particles.density;
-        (0..s.particles.len())
-            .into_par_iter()
-            .map(|i| {
-                let rho_c2 = rho[i] * sound_speed[i] * sound_speed[i];
-                sph_damage::decoupling::past_adhesion(pressure[i], damage[i], rho_c2)
-            })
-            .collect()
-    }
-}
-
-/// c_L = √(c² + 4G/(3ρ)) of every particle (c itself for fluids).
-pub(super) fn longitudinal_speeds(
-    sound_speed: &[f64],
-    shear_modulus: &[f64],
-    density: &[f64],
-) -> Vec<f64> {
-    sound_speed
-        .par_iter()
-        .zip(shear_modulus)
-        .zip(density)
-        .map(|((&c, &g), &rho)| sph_damage::longitudinal_speed(c, g, rho))
-        .collect()
-}
-
-/// P_D of every particle (P itself without damage).
-pub(super) fn damaged_pressures(pressure: &[f64], damage: &[f64]) -> Vec<f64> {
-    if damage.is_empty() {
-        return pressure.to_vec();
-    }
-    pressure
-        .par_iter()
-        .zip(damage)
-        .map(|(&p, &d)| damaged_pressure(p, d))
-        .collect()
 }
 
 /// The artificial-stress tensor R of every particle, ghosts included, from its total
 /// stress σ = (1 − D) S − P_D I (paper §2.3; S itself where damage acts on the yield
-/// strength only); in RZ (the rings' radii set) R (1/r), as the pair term weighs it like
-/// the stress (axisymmetric.rs), once per particle rather than per pair.
-pub(super) fn artificial_stress_tensors<D: Dimension>(
+/// strength only), whether it is nonzero, and in RZ (the rings' radii set) its hoop
+/// component R_θθ from σ_θθ = (1 − D) S_θθ − P_D (axisymmetric.rs; empty otherwise), in
+/// one pass (`rz` for an RZ run). In RZ R is stored as R (1/r): the pair term weighs it like the stress, once
+/// per particle rather than per pair; R_θθ tells the pair loop where a side needs the
+/// kernel ratio f_ij for the hoop force.
+pub(super) fn artificial_stresses<D: Dimension>(
     ext: &Extended<'_, D>,
     a: &sph_riemann::ArtificialStress,
-) -> Vec<D::Tensor> {
-    (0..ext.position.len())
-        .into_par_iter()
-        .map(|k| {
-            let p = ext.pressure[k];
-            let sigma = if !ext.has_stress() {
-                D::Tensor::IDENTITY * (-p)
-            } else {
-                D::project(&ext.stress(k)) - D::Tensor::IDENTITY * p
-            };
-            let r = a.tensor(&sigma, p, ext.density[k]);
-            match ext.radius.get(k) {
-                Some(&w) => r * (1.0 / w),
-                None => r,
+    rz: bool,
+) -> (Vec<D::Tensor>, Vec<bool>, Vec<f64>) {
+    let n = ext.position.len();
+    let mut tensors = vec![D::Tensor::ZERO; n];
+    let mut on = vec![false; n];
+    let mut hoops = if rz { vec![0.0; n] } else { Vec::new() };
+    tensors
+        .par_chunks_mut(PASS_CHUNK)
+        .zip(on.par_chunks_mut(PASS_CHUNK))
+        .zip(chunks_or_none(&mut hoops, n.div_ceil(PASS_CHUNK)))
+        .enumerate()
+        .for_each(|(c, ((tensors, on), mut hoops))| {
+            for i in 0..tensors.len() {
+                let k = c * PASS_CHUNK + i;
+                let p = ext.pressure[k];
+                let sigma = if !ext.has_stress() {
+                    D::Tensor::IDENTITY * (-p)
+                } else {
+                    D::project(&ext.stress(k)) - D::Tensor::IDENTITY * p
+                };
+                let r = a.tensor(&sigma, p, ext.density[k]);
+                tensors[i] = match ext.radius.get(k) {
+                    Some(&w) => r * (1.0 / w),
+                    None => r,
+                };
+                on[i] = tensors[i] != D::Tensor::ZERO;
+                if let Some(hoops) = hoops.as_deref_mut() {
+                    let s_tt = if ext.has_stress() {
+                        ext.stress(k).z_axis.z
+                    } else {
+                        0.0
+                    };
+                    hoops[i] = a.hoop(s_tt - p, p, ext.density[k]);
+                }
             }
-        })
-        .collect()
-}
-
-/// RZ: the hoop component R_θθ of every particle's artificial stress, ghosts included,
-/// from σ_θθ = (1 − D) S_θθ − P_D (paper §2.3; axisymmetric.rs): the pair loop needs the
-/// kernel ratio f_ij for the hoop force only where a side's is nonzero.
-pub(super) fn artificial_stress_hoops<D: Dimension>(
-    ext: &Extended<'_, D>,
-    a: &sph_riemann::ArtificialStress,
-) -> Vec<f64> {
-    (0..ext.position.len())
-        .into_par_iter()
-        .map(|k| {
-            let p = ext.pressure[k];
-            let s_tt = if ext.has_stress() {
-                ext.stress(k).z_axis.z
-            } else {
-                0.0
-            };
-            a.hoop(s_tt - p, p, ext.density[k])
-        })
-        .collect()
+        });
+    (tensors, on, hoops)
 }
 
 /// P and c of every particle.

@@ -3,6 +3,7 @@
 //! strength model, and the plastic work (paper §3.2–3.3).
 
 use super::*;
+use sph_core::glam::DMat3;
 
 impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
     /// The strength model's view of particle i at the given pressure.
@@ -13,16 +14,37 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
         pressure: f64,
     ) -> sph_strength::StrengthState {
         let p = &s.particles;
-        let m = &self.materials[p.material[i] as usize];
-        let temperature = m
-            .thermal
-            .as_ref()
-            .map_or(300.0, |t| t.temperature(p.specific_energy[i]));
-        let mut st = sph_strength::StrengthState::new(pressure, p.density[i], temperature);
-        st.plastic_strain = s.plastic_strain.get(i).copied().unwrap_or(0.0);
-        st.plastic_strain_rate = s.plastic_strain_rate.get(i).copied().unwrap_or(0.0);
-        st.damage = match (&m.damage, s.damage_state.get(i)) {
-            (Some(model), Some(&x)) => model.variable().to_damage(x),
+        self.strength_view(
+            p.material[i],
+            p.specific_energy[i],
+            p.density[i],
+            (
+                s.plastic_strain.get(i).copied().unwrap_or(0.0),
+                s.plastic_strain_rate.get(i).copied().unwrap_or(0.0),
+            ),
+            s.damage_state.get(i).copied(),
+            pressure,
+        )
+    }
+
+    /// The strength model's view of a particle of material `material` with specific
+    /// energy `e`, density `rho`, plastic strain and its rate `plastic`, damage state
+    /// `damage_state` (none without damage) at pressure `pressure`.
+    fn strength_view(
+        &self,
+        material: u16,
+        e: f64,
+        rho: f64,
+        plastic: (f64, f64),
+        damage_state: Option<f64>,
+        pressure: f64,
+    ) -> sph_strength::StrengthState {
+        let m = &self.materials[material as usize];
+        let temperature = m.thermal.as_ref().map_or(300.0, |t| t.temperature(e));
+        let mut st = sph_strength::StrengthState::new(pressure, rho, temperature);
+        (st.plastic_strain, st.plastic_strain_rate) = plastic;
+        st.damage = match (&m.damage, damage_state) {
+            (Some(model), Some(x)) => model.variable().to_damage(x),
             _ => 0.0,
         };
         st
@@ -49,23 +71,15 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
             _ => None,
         };
         let grads = stage.grads.as_ref();
-        let pseudo = !y.pseudo_strain.is_empty();
-        type Updated = (sph_core::glam::DMat3, f64, f64, sph_core::glam::DMat3);
-        let updated: Vec<Updated> = (0..y.particles.len())
-            .into_par_iter()
-            .map(|i| {
-                let pseudo_0 = if pseudo {
-                    y.pseudo_strain[i]
-                } else {
-                    sph_core::glam::DMat3::ZERO
-                };
-                let Some(model) = &self.materials[y.particles.material[i] as usize].strength else {
-                    return (
-                        sph_core::glam::DMat3::ZERO,
-                        y.plastic_strain[i],
-                        0.0,
-                        pseudo_0,
-                    );
+        let p = &y.particles;
+        let damage_state = &y.damage_state;
+        // Particle i's update, in place: S, ε_p, its rate and (where tracked) the
+        // pseudo-plastic strain.
+        let update =
+            |i: usize, s: &mut DMat3, ep: &mut f64, rate: &mut f64, pseudo: Option<&mut DMat3>| {
+                let Some(model) = &self.materials[p.material[i] as usize].strength else {
+                    (*s, *rate) = (DMat3::ZERO, 0.0);
+                    return;
                 };
                 let g = stage.shear_modulus[i];
                 // The rate of the intact stress S (damage scales it only where it acts).
@@ -77,36 +91,54 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
                         }
                         sph_strength::jaumann_rate(&rate_state.stress[i], &l, g)
                     }
-                    _ => sph_core::glam::DMat3::ZERO,
+                    _ => DMat3::ZERO,
                 };
-                let trial = y.stress[i] + ds * dt;
-                let st =
-                    self.strength_state(y, i, self.scheme.yield_pressure.of(stage.pressure[i]));
+                let trial = *s + ds * dt;
+                let st = self.strength_view(
+                    p.material[i],
+                    p.specific_energy[i],
+                    p.density[i],
+                    (*ep, *rate),
+                    damage_state.get(i).copied(),
+                    self.scheme.yield_pressure.of(stage.pressure[i]),
+                );
                 let ret = sph_strength::radial_return(trial, model.yield_strength(&st));
                 let dep = ret.plastic_strain_increment(g).unwrap_or(0.0);
-                // ds is zero where G = 0, so the pseudo-plastic strain only grows in a
-                // solid.
-                let pseudo_1 = if pseudo && g > 0.0 {
-                    pseudo_0 + ds * (dt / g)
-                } else {
-                    pseudo_0
-                };
-                (ret.stress, y.plastic_strain[i] + dep, dep / dt, pseudo_1)
-            })
-            .collect();
-        y.stress
-            .par_iter_mut()
-            .zip(&mut y.plastic_strain)
-            .zip(&mut y.plastic_strain_rate)
-            .zip(&updated)
-            .for_each(|(((s, ep), rate), u)| {
-                (*s, *ep, *rate) = (u.0, u.1, u.2);
+                (*s, *ep, *rate) = (ret.stress, *ep + dep, dep / dt);
+                // ds is zero where G = 0, so the pseudo-plastic strain only grows in a solid.
+                if let Some(e_pp) = pseudo
+                    && g > 0.0
+                {
+                    *e_pp += ds * (dt / g);
+                }
+            };
+        let chunks = y
+            .stress
+            .par_chunks_mut(PASS_CHUNK)
+            .zip(y.plastic_strain.par_chunks_mut(PASS_CHUNK))
+            .zip(y.plastic_strain_rate.par_chunks_mut(PASS_CHUNK))
+            .enumerate();
+        if y.pseudo_strain.is_empty() {
+            chunks.for_each(|(c, ((s, ep), rate))| {
+                for k in 0..s.len() {
+                    update(
+                        c * PASS_CHUNK + k,
+                        &mut s[k],
+                        &mut ep[k],
+                        &mut rate[k],
+                        None,
+                    );
+                }
             });
-        if pseudo {
-            y.pseudo_strain
-                .par_iter_mut()
-                .zip(&updated)
-                .for_each(|(e_pp, u)| *e_pp = u.3);
+        } else {
+            chunks
+                .zip(y.pseudo_strain.par_chunks_mut(PASS_CHUNK))
+                .for_each(|((c, ((s, ep), rate)), pseudo)| {
+                    for k in 0..s.len() {
+                        let i = c * PASS_CHUNK + k;
+                        update(i, &mut s[k], &mut ep[k], &mut rate[k], Some(&mut pseudo[k]));
+                    }
+                });
         }
     }
 }
