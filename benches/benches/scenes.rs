@@ -3,7 +3,7 @@
 //! and as the RZ scene at the study's 0.5 mm (`basalt_3.9kms_rz.toml`), full solid physics
 //! as bundled. For each, on 1 and 2 threads: a fixed number of RK2 steps after a warm-up,
 //! particle-steps per second in all and per core, the share of each solver phase (the
-//! neighbour search's among them); then, on the state reached, the neighbours per
+//! neighbour search's among them) and the searches made in the timed steps; then, on the state reached, the neighbours per
 //! particle and the candidates the cell list tested per neighbour found, and the memory
 //! per particle (peak resident growth and the live heap's peak during the steps).
 //!
@@ -79,13 +79,14 @@ fn measure<D: sph_core::Dimension>(sim: &mut Simulation<D, KernelChoice>, case: 
         particles: n,
         rate: (n * case.steps) as f64 / wall,
         phases: format!(
-            "neighbours {:.0} %, pair set-up {:.0} %, EOS {:.0} %, gradients {:.0} %, pair loop {:.0} %, integration {:.0} %",
+            "neighbours {:.0} %, pair set-up {:.0} %, EOS {:.0} %, gradients {:.0} %, pair loop {:.0} %, integration {:.0} %; {} searches",
             share(t.neighbours),
             share(t.setup),
             share(t.eos),
             share(t.gradients),
             share(t.pairs),
-            share(t.integration)
+            share(t.integration),
+            t.searches
         ),
         neighbour_share: share(t.neighbours),
     }
