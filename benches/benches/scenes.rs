@@ -12,6 +12,7 @@
 //! cargo bench -p sph-benches --bench scenes -- rz           # one of them: 3d or rz
 //! cargo bench -p sph-benches --bench scenes -- 3d --quick   # 3-D at A_res 2 mm, 2 steps
 //! cargo bench -p sph-benches --bench scenes -- 3d --search  # ten searches, no steps
+//! cargo bench -p sph-benches --bench scenes -- rz --each-stage # a search at each stage
 //! cargo bench -p sph-benches --bench scenes -- rz --each-step # one search per RK2 step
 //! cargo bench -p sph-benches --bench scenes -- rz --verlet    # a Verlet list
 //! cargo bench -p sph-benches --bench scenes -- 3d --halo    # domains' ghost layers, no steps
@@ -23,9 +24,10 @@
 //! next stage, `sph_benches::keep_freed_memory`); `--allocator-defaults` leaves glibc's
 //! defaults, to measure what that gives.
 //!
-//! `--each-step` and `--verlet` set `[solver] neighbour_search = "each-step"` or
-//! `"verlet"` (its default skin) over the scene's own settings
-//! (`SchemeConfig::neighbour_search`).
+//! `--each-stage`, `--each-step` and `--verlet` set `[solver] neighbour_search =
+//! "each-stage"`, `"each-step"` or `"verlet"` (its default skin) over the scene's own
+//! setting (`SchemeConfig::neighbour_search`); without them each scene runs as bundled:
+//! the RZ scene with its Verlet list, the 3-D scene with a search at each stage.
 
 use sph_benches::{Counting, LIVE, PEAK, peak_rss};
 use sph_core::{CellList, NeighborSearch, ScalarSupport, regions_of_rows};
@@ -48,8 +50,9 @@ struct Case {
     resolution_scale: f64,
     warm_up: usize,
     steps: usize,
-    /// When the neighbour list is built (the scene's own setting: at each stage).
-    search: NeighbourSearch,
+    /// When the neighbour list is built, over the scene's own setting (`None`: as
+    /// bundled).
+    search: Option<NeighbourSearch>,
 }
 
 /// What one thread count measured.
@@ -131,8 +134,8 @@ fn scene_of(case: &Case) -> Scene {
         .join("../examples/scenes")
         .join(case.file);
     let mut scene = Scene::from_toml_file(&path).expect("scene");
-    if case.search != NeighbourSearch::EachStage {
-        scene.solver.neighbour_search = Some(case.search);
+    if let Some(search) = case.search {
+        scene.solver.neighbour_search = Some(search);
     }
     scene
 }
@@ -149,10 +152,10 @@ fn run_case(case: &Case) {
         case.resolution_scale,
         case.steps,
         case.warm_up,
-        match case.search {
-            NeighbourSearch::EachStage => "at each stage",
-            NeighbourSearch::EachStep => "once per step",
-            NeighbourSearch::Verlet => "into a Verlet list",
+        match scene.solver.neighbour_search {
+            None | Some(NeighbourSearch::EachStage) => "at each stage",
+            Some(NeighbourSearch::EachStep) => "once per step",
+            Some(NeighbourSearch::Verlet) => "into a Verlet list",
         }
     );
     let mut rates = Vec::new();
@@ -377,11 +380,13 @@ fn main() {
     let quick = args.iter().any(|a| a == "--quick");
     let search = args.iter().any(|a| a == "--search");
     let search_mode = if args.iter().any(|a| a == "--verlet") {
-        NeighbourSearch::Verlet
+        Some(NeighbourSearch::Verlet)
     } else if args.iter().any(|a| a == "--each-step") {
-        NeighbourSearch::EachStep
+        Some(NeighbourSearch::EachStep)
+    } else if args.iter().any(|a| a == "--each-stage") {
+        Some(NeighbourSearch::EachStage)
     } else {
-        NeighbourSearch::EachStage
+        None
     };
     // The 3-D scene at the study's own A_res 0.5 mm (1.0 M particles).
     let study = args.iter().any(|a| a == "--study-resolution");
