@@ -29,11 +29,17 @@ pub(crate) fn damage_of<D: Dimension>(state: &State<D>, materials: &[Material]) 
         .damage_state
         .iter()
         .zip(&p.material)
-        .map(|(&s, &m)| match &materials[m as usize].damage {
-            Some(model) => model.variable().to_damage(s),
-            None => 0.0,
-        })
+        .map(|(&s, &m)| damage_at(&materials[m as usize], s))
         .collect()
+}
+
+/// D of a particle of `material` with damage state s (0 without a damage model).
+#[inline]
+pub(crate) fn damage_at(material: &Material, s: f64) -> f64 {
+    match &material.damage {
+        Some(model) => model.variable().to_damage(s),
+        None => 0.0,
+    }
 }
 
 /// One particle's damage rate ds/dt and the bounds on D after the update.

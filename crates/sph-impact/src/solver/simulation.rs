@@ -11,7 +11,7 @@ use crate::solver::config::{
 };
 use crate::solver::damage::{
     DamageEvents, DamageRate, DamageStageInput, TensorRate, activates_on_pseudo_strain,
-    add_shear_damage, advance_damage, damage_of, damage_rates, damaged_pressure,
+    add_shear_damage, advance_damage, damage_at, damage_of, damage_rates, damaged_pressure,
     fragment_densities, has_tensor_damage, tensor_damage_rates,
 };
 use crate::solver::derivatives::{

@@ -15,7 +15,7 @@ pub(super) struct ParticleTerms {
     pub(super) pressure: Vec<f64>,
     /// c from the EOS.
     pub(super) sound_speed: Vec<f64>,
-    /// D (empty without damage).
+    /// D (empty without damage, and when the caller gave it).
     pub(super) damage: Vec<f64>,
     /// P_D, what the pair terms see (P itself without damage).
     pub(super) pressure_d: Vec<f64>,
@@ -32,8 +32,8 @@ pub(super) struct ParticleTerms {
 
 impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
     /// The terms of `state`'s particles. `damage` is D where the stage has it already
-    /// (summation density evaluates the terms again at its new density); `None`
-    /// computes it from the damage state.
+    /// (summation density evaluates the terms again at its new density; the returned
+    /// `damage` is then empty); `None` computes it from the damage state.
     pub(super) fn particle_terms(&self, state: &State<D>, damage: Option<&[f64]>) -> ParticleTerms {
         let p = &state.particles;
         let n = p.len();
@@ -43,10 +43,11 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
         let mut terms = ParticleTerms {
             pressure: vec![0.0; n],
             sound_speed: vec![0.0; n],
-            damage: match damage {
-                Some(d) => d.to_vec(),
-                None if has_damage => vec![0.0; n],
-                None => Vec::new(),
+            // Computed only where not given (and then not returned).
+            damage: if damage.is_none() && has_damage {
+                vec![0.0; n]
+            } else {
+                Vec::new()
             },
             pressure_d: vec![0.0; n],
             shear_modulus: vec![0.0; n],
@@ -57,7 +58,8 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
                 Vec::new()
             },
         };
-        let compute_damage = damage.is_none();
+        // An empty D given is a run without damage.
+        let given = damage.filter(|d| !d.is_empty());
         let ParticleTerms {
             pressure,
             sound_speed,
@@ -84,16 +86,15 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
                     let m = &self.materials[p.material[i] as usize];
                     let pt = m.eos.evaluate(p.density[i], p.specific_energy[i]);
                     (pr[k], cs[k]) = (pt.pressure, pt.sound_speed);
-                    // D from the damage model's integrated variable (0 without a model).
-                    if let Some(dm) = dm.as_deref_mut()
-                        && compute_damage
-                    {
-                        dm[k] = match &m.damage {
-                            Some(model) => model.variable().to_damage(state.damage_state[i]),
-                            None => 0.0,
-                        };
-                    }
-                    let d = dm.as_deref().map(|dm| dm[k]);
+                    // D as given, or from the damage model's integrated variable.
+                    let d = match (given, dm.as_deref_mut()) {
+                        (Some(given), _) => Some(given[i]),
+                        (None, Some(dm)) => {
+                            dm[k] = damage_at(m, state.damage_state[i]);
+                            Some(dm[k])
+                        }
+                        (None, None) => None,
+                    };
                     pd[k] = match d {
                         Some(d) => damaged_pressure(pt.pressure, d),
                         None => pt.pressure,

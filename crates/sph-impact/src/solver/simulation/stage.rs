@@ -554,9 +554,9 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
 /// stress σ = (1 − D) S − P_D I (paper §2.3; S itself where damage acts on the yield
 /// strength only), whether it is nonzero, and in RZ (the rings' radii set) its hoop
 /// component R_θθ from σ_θθ = (1 − D) S_θθ − P_D (axisymmetric.rs; empty otherwise), in
-/// one pass (`rz` for an RZ run). In RZ R is stored as R (1/r): the pair term weighs it like the stress, once
-/// per particle rather than per pair; R_θθ tells the pair loop where a side needs the
-/// kernel ratio f_ij for the hoop force.
+/// one pass (`rz` for an RZ run). In RZ R is stored as R (1/r): the pair term weighs it
+/// like the stress, once per particle rather than per pair; R_θθ tells the pair loop
+/// where a side needs the kernel ratio f_ij for the hoop force.
 pub(super) fn artificial_stresses<D: Dimension>(
     ext: &Extended<'_, D>,
     a: &sph_riemann::ArtificialStress,

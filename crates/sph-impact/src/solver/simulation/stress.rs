@@ -43,10 +43,7 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
         let temperature = m.thermal.as_ref().map_or(300.0, |t| t.temperature(e));
         let mut st = sph_strength::StrengthState::new(pressure, rho, temperature);
         (st.plastic_strain, st.plastic_strain_rate) = plastic;
-        st.damage = match (&m.damage, damage_state) {
-            (Some(model), Some(x)) => model.variable().to_damage(x),
-            _ => 0.0,
-        };
+        st.damage = damage_state.map_or(0.0, |x| damage_at(m, x));
         st
     }
 
@@ -112,33 +109,24 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
                     *e_pp += ds * (dt / g);
                 }
             };
-        let chunks = y
-            .stress
+        let n_chunks = y.stress.len().div_ceil(PASS_CHUNK);
+        y.stress
             .par_chunks_mut(PASS_CHUNK)
             .zip(y.plastic_strain.par_chunks_mut(PASS_CHUNK))
             .zip(y.plastic_strain_rate.par_chunks_mut(PASS_CHUNK))
-            .enumerate();
-        if y.pseudo_strain.is_empty() {
-            chunks.for_each(|(c, ((s, ep), rate))| {
+            .zip(chunks_or_none(&mut y.pseudo_strain, n_chunks))
+            .enumerate()
+            .for_each(|(c, (((s, ep), rate), mut pseudo))| {
                 for k in 0..s.len() {
+                    let e_pp = pseudo.as_deref_mut().map(|e| &mut e[k]);
                     update(
                         c * PASS_CHUNK + k,
                         &mut s[k],
                         &mut ep[k],
                         &mut rate[k],
-                        None,
+                        e_pp,
                     );
                 }
             });
-        } else {
-            chunks
-                .zip(y.pseudo_strain.par_chunks_mut(PASS_CHUNK))
-                .for_each(|((c, ((s, ep), rate)), pseudo)| {
-                    for k in 0..s.len() {
-                        let i = c * PASS_CHUNK + k;
-                        update(i, &mut s[k], &mut ep[k], &mut rate[k], Some(&mut pseudo[k]));
-                    }
-                });
-        }
     }
 }
