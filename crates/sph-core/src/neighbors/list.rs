@@ -221,15 +221,18 @@ impl NeighborList {
                 for k in 0..c.rows() {
                     let i = c.first_row + k;
                     let listed = c.row(k);
-                    row.clear();
-                    row.resize(listed.len(), 0);
+                    if row.len() < listed.len() {
+                        row.resize(listed.len(), 0);
+                    }
+                    // Each listed j is written at the next free place, which moves on
+                    // only if j is kept: no branch on the test.
+                    let slots = &mut row[..listed.len()];
                     let mut n = 0;
                     for j in listed {
-                        row[n] = j;
+                        slots[n] = j;
                         n += usize::from(keep(i, j));
                     }
-                    row.truncate(n);
-                    out.push_row(&row);
+                    out.push_row(&slots[..n]);
                 }
                 out.finish()
             })

@@ -55,9 +55,20 @@ pub(crate) trait PairKernel<D: Dimension>: Sync {
 pub(crate) struct ScalarPairKernel<'a, K> {
     pub kernel: K,
     pub h: &'a [f64],
-    inv_h: Vec<f64>,
-    w_norm: Vec<f64>,
-    g_norm: Vec<f64>,
+    /// Each particle's factors together: a pair reads all of a partner's with one
+    /// bounds test and from one cache line.
+    scale: Vec<Scale>,
+}
+
+/// A particle's kernel factors for a scalar support h.
+#[derive(Clone, Copy, Debug)]
+struct Scale {
+    /// 1/h.
+    inv_h: f64,
+    /// σ/h^d, W's.
+    w_norm: f64,
+    /// σ/h^(d+1), ∇W's and ∂W/∂h's.
+    g_norm: f64,
 }
 
 impl<'a, K: Kernel> ScalarPairKernel<'a, K> {
@@ -65,43 +76,35 @@ impl<'a, K: Kernel> ScalarPairKernel<'a, K> {
     pub fn new(kernel: K, h: &'a [f64], dim: usize) -> Self {
         let sigma = kernel.sigma(dim);
         // Once per stage over every particle and ghost: in parallel (the same numbers).
-        let inv_h: Vec<f64> = h.par_iter().map(|h| 1.0 / h).collect();
-        let w_norm = inv_h
+        let scale = h
             .par_iter()
-            .map(|ih| sigma * ih.powi(dim as i32))
+            .map(|h| {
+                let inv_h = 1.0 / h;
+                Scale {
+                    inv_h,
+                    w_norm: sigma * inv_h.powi(dim as i32),
+                    g_norm: sigma * inv_h.powi(dim as i32 + 1),
+                }
+            })
             .collect();
-        let g_norm = inv_h
-            .par_iter()
-            .map(|ih| sigma * ih.powi(dim as i32 + 1))
-            .collect();
-        Self {
-            kernel,
-            h,
-            inv_h,
-            w_norm,
-            g_norm,
-        }
+        Self { kernel, h, scale }
+    }
+    /// W = σ h^(−d) f(r/h), ∂W/∂h = −σ h^(−d−1) (d f + q f').
+    #[inline(always)]
+    fn dw_dh(s: Scale, q: f64, f: f64, df: f64, d: f64) -> f64 {
+        -s.g_norm * (d * f + q * df)
     }
 }
 
-impl<K: Kernel> ScalarPairKernel<'_, K> {
-    /// ∇_i W̄ from both sides' f'(q): r ½(σ f'(q_i)/h_i^(d+1) + σ f'(q_j)/h_j^(d+1))/|r|,
-    /// zero for coincident particles.
-    #[inline(always)]
-    fn pair_gradient<V: Vector>(&self, i: usize, j: usize, r: V, dist: f64, df: (f64, f64)) -> V {
-        if dist == 0.0 {
-            return V::ZERO;
-        }
-        let (gi, gj) = (df.0 * self.g_norm[i], df.1 * self.g_norm[j]);
-        r * (0.5 * (gi + gj) / dist)
+/// ∇_i W̄ from both sides' f'(q): r ½(σ f'(q_i)/h_i^(d+1) + σ f'(q_j)/h_j^(d+1))/|r|,
+/// zero for coincident particles.
+#[inline(always)]
+fn pair_gradient<V: Vector>((si, sj): (Scale, Scale), r: V, dist: f64, df: (f64, f64)) -> V {
+    if dist == 0.0 {
+        return V::ZERO;
     }
-
-    /// ∂W(r, h_k)/∂h at q = |r|/h_k from f(q) and f'(q), in d dimensions: with
-    /// W = σ h^(−d) f(r/h), ∂W/∂h = −σ h^(−d−1) (d f + q f').
-    #[inline(always)]
-    fn dw_dh(&self, k: usize, q: f64, f: f64, df: f64, d: f64) -> f64 {
-        -self.g_norm[k] * (d * f + q * df)
-    }
+    let (gi, gj) = (df.0 * si.g_norm, df.1 * sj.g_norm);
+    r * (0.5 * (gi + gj) / dist)
 }
 
 impl<D: Dimension, K: Kernel> PairKernel<D> for ScalarPairKernel<'_, K> {
@@ -111,8 +114,8 @@ impl<D: Dimension, K: Kernel> PairKernel<D> for ScalarPairKernel<'_, K> {
     }
     #[inline(always)]
     fn w_dist(&self, i: usize, j: usize, _r: D::Vector, d: f64) -> f64 {
-        0.5 * (self.kernel.f(d * self.inv_h[i]) * self.w_norm[i]
-            + self.kernel.f(d * self.inv_h[j]) * self.w_norm[j])
+        let (si, sj) = (self.scale[i], self.scale[j]);
+        0.5 * (self.kernel.f(d * si.inv_h) * si.w_norm + self.kernel.f(d * sj.inv_h) * sj.w_norm)
     }
     #[inline(always)]
     fn grad(&self, i: usize, j: usize, r: D::Vector) -> D::Vector {
@@ -123,11 +126,12 @@ impl<D: Dimension, K: Kernel> PairKernel<D> for ScalarPairKernel<'_, K> {
         if dist == 0.0 {
             return D::Vector::ZERO;
         }
+        let (si, sj) = (self.scale[i], self.scale[j]);
         let df = (
-            self.kernel.df(dist * self.inv_h[i]),
-            self.kernel.df(dist * self.inv_h[j]),
+            self.kernel.df(dist * si.inv_h),
+            self.kernel.df(dist * sj.inv_h),
         );
-        self.pair_gradient(i, j, r, dist, df)
+        pair_gradient((si, sj), r, dist, df)
     }
     #[inline(always)]
     fn h(&self, i: usize) -> f64 {
@@ -139,20 +143,22 @@ impl<D: Dimension, K: Kernel> PairKernel<D> for ScalarPairKernel<'_, K> {
     }
     #[inline(always)]
     fn dw_dh_own_at(&self, i: usize, _r: D::Vector, dist: f64) -> f64 {
-        let q = dist * self.inv_h[i];
-        self.dw_dh(i, q, self.kernel.f(q), self.kernel.df(q), D::DIM as f64)
+        let si = self.scale[i];
+        let q = dist * si.inv_h;
+        Self::dw_dh(si, q, self.kernel.f(q), self.kernel.df(q), D::DIM as f64)
     }
     #[inline(always)]
     fn grad_and_dw_dh(&self, i: usize, j: usize, r: D::Vector, dist: f64) -> (D::Vector, f64, f64) {
         // Each side's kernel and its derivative once, through the helpers of grad_at and
         // dw_dh_own_at, so the numbers are theirs to the bit.
         let d = D::DIM as f64;
-        let (qi, qj) = (dist * self.inv_h[i], dist * self.inv_h[j]);
+        let (si, sj) = (self.scale[i], self.scale[j]);
+        let (qi, qj) = (dist * si.inv_h, dist * sj.inv_h);
         let (dfi, dfj) = (self.kernel.df(qi), self.kernel.df(qj));
         (
-            self.pair_gradient(i, j, r, dist, (dfi, dfj)),
-            self.dw_dh(i, qi, self.kernel.f(qi), dfi, d),
-            self.dw_dh(j, qj, self.kernel.f(qj), dfj, d),
+            pair_gradient((si, sj), r, dist, (dfi, dfj)),
+            Self::dw_dh(si, qi, self.kernel.f(qi), dfi, d),
+            Self::dw_dh(sj, qj, self.kernel.f(qj), dfj, d),
         )
     }
 }

@@ -257,6 +257,26 @@ pub(crate) fn take_where<T>(v: &mut Vec<T>, leave: &[bool]) -> Vec<T> {
     out
 }
 
+/// Whether a pair of a Verlet list interacts at a stage: where a search of the present
+/// supports would list it, by that search's own test (`sph_core::ScalarSupport`:
+/// |x_i − x_j|² < max(h_i, h_j)²), between live particles. Each particle's position and
+/// support are held together, so that a pair reads its partner's with one bounds test,
+/// and a ghost that is not live stands at infinity, where the test fails (|x_i − x_j|² is
+/// then infinite or NaN): the same answers as testing liveness apart.
+pub(crate) struct PairProbe<D: Dimension>(Vec<(D::Vector, f64)>);
+
+impl<D: Dimension> PairProbe<D> {
+    /// Whether the pair (i, j) interacts. Without branches, for
+    /// `NeighborList::retain_pairs`: about a sixth of a Verlet row fails, in no order a
+    /// branch predictor could learn.
+    #[inline(always)]
+    pub fn interacts(&self, i: usize, j: usize) -> bool {
+        let ((xi, hi), (xj, hj)) = (self.0[i], self.0[j]);
+        let s = hi.max(hj);
+        Vector::norm_squared(xi - xj) < s * s
+    }
+}
+
 /// Real particles followed by ghosts, with everything a pair term reads.
 #[derive(Clone, Debug, Default)]
 pub(crate) struct Extended<'a, D: Dimension> {
@@ -331,7 +351,7 @@ pub(crate) struct Extended<'a, D: Dimension> {
     /// otherwise: every particle is.
     live: Vec<bool>,
     /// Whether the ghosts are a Verlet list's (not every one live): its pairs are picked
-    /// with [`Self::interacts`] for the pair passes.
+    /// with [`Self::pair_probe`] for the pair passes.
     pub skin: bool,
 }
 
@@ -401,16 +421,24 @@ impl<'a, D: Dimension> Extended<'a, D> {
         k >= self.n_real && self.ghost_unilateral[k - self.n_real]
     }
 
-    /// Whether the pair (i, j) of a Verlet list interacts at this stage ([`Self::skin`]):
-    /// where a search of the present supports would list it, by that search's own test
-    /// (`sph_core::ScalarSupport`: |x_i − x_j|² < max(h_i, h_j)²), between live
-    /// particles. Without branches, for `NeighborList::retain_pairs`: about a sixth of a
-    /// Verlet row fails, in no order a branch predictor could learn.
-    #[inline(always)]
-    pub fn interacts(&self, i: usize, j: usize) -> bool {
-        let s = self.h[i].max(self.h[j]);
-        let near = Vector::norm_squared(self.position[i] - self.position[j]) < s * s;
-        near & self.is_live(i) & self.is_live(j)
+    /// The test of a Verlet list's pairs at this stage ([`Self::skin`]; [`PairProbe`]).
+    pub fn pair_probe(&self) -> PairProbe<D> {
+        use rayon::prelude::*;
+        let far = D::Vector::splat(f64::INFINITY);
+        PairProbe(
+            (0..self.position.len())
+                .into_par_iter()
+                .with_min_len(1024)
+                .map(|k| {
+                    let x = if self.is_live(k) {
+                        self.position[k]
+                    } else {
+                        far
+                    };
+                    (x, self.h[k])
+                })
+                .collect(),
+        )
     }
 
     /// Whether particle k is real or a live ghost (every particle without a Verlet
@@ -658,4 +686,36 @@ fn embed_map<D: Dimension>(map: &D::Tensor) -> sph_core::glam::DMat3 {
             if D::DIM > 1 { 0.0 } else { 1.0 },
             if D::DIM > 2 { 0.0 } else { 1.0 },
         ))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use sph_core::{Dim2, glam::DVec2};
+
+    /// The probe's test is the search's |x_i − x_j|² < max(h_i, h_j)², and a ghost that is
+    /// not live (at infinity) pairs with nothing, itself included.
+    #[test]
+    fn the_pair_probe_is_the_search_test_between_live_particles() {
+        let far = DVec2::splat(f64::INFINITY);
+        let probe = PairProbe::<Dim2>(vec![
+            (DVec2::new(0.0, 0.0), 1.0),
+            (DVec2::new(0.9, 0.0), 0.5),
+            (DVec2::new(0.0, 1.5), 2.0),
+            (DVec2::new(3.0, 0.0), 1.0),
+            (far, 1.0),
+        ]);
+        // Within the larger support only: the test is symmetric.
+        for (i, j, expected) in [(0, 1, true), (0, 2, true), (1, 2, true), (0, 3, false)] {
+            assert_eq!(probe.interacts(i, j), expected, "({i}, {j})");
+            assert_eq!(probe.interacts(j, i), expected, "({j}, {i})");
+        }
+        // Exactly at the support: not a pair (strict test).
+        let edge = PairProbe::<Dim2>(vec![(DVec2::ZERO, 1.0), (DVec2::new(1.0, 0.0), 1.0)]);
+        assert!(!edge.interacts(0, 1));
+        for k in 0..5 {
+            assert!(!probe.interacts(k, 4), "({k}, dead ghost)");
+            assert!(!probe.interacts(4, k), "(dead ghost, {k})");
+        }
+    }
 }

@@ -154,40 +154,41 @@ fn gradients_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
     // The pair (i, j) with dx = x_j − x_i, added to i's sums and, for a pair inside the
     // block (`to_j`), to j's: every term is (f_j − f_i) ⊗ ∇_i W̄ or dx ⊗ ∇_i W̄ times the
     // partner's volume, the same product for both sides (both factors change sign).
-    let add_pair = |i: usize, j: usize, sums_i: &mut Sums<D>, to_j: Option<&mut Sums<D>>| {
-        let xi = ext.position[i];
-        let dx = ext.position[j] - xi;
-        let dist = dx.norm();
-        // ∇_i W̄ and, for the grad-h factor, each side's own ∂W/∂h times the partner's
-        // mass (j's only when the pair is evaluated for both).
-        let (g, dwdh_i, dwdh_j) = match (grad_h, to_j.is_some()) {
-            (true, true) => {
-                let (g, wi, wj) = pk.grad_and_dw_dh(i, j, -dx, dist);
-                (g, ext.mass[j] * wi, ext.mass[i] * wj)
+    let add_pair =
+        |q: &Partner<D>, i: usize, j: usize, sums_i: &mut Sums<D>, to_j: Option<&mut Sums<D>>| {
+            let xi = q.position[i];
+            let dx = q.position[j] - xi;
+            let dist = dx.norm();
+            // ∇_i W̄ and, for the grad-h factor, each side's own ∂W/∂h times the partner's
+            // mass (j's only when the pair is evaluated for both).
+            let (g, dwdh_i, dwdh_j) = match (grad_h, to_j.is_some()) {
+                (true, true) => {
+                    let (g, wi, wj) = pk.grad_and_dw_dh(i, j, -dx, dist);
+                    (g, q.mass[j] * wi, q.mass[i] * wj)
+                }
+                (true, false) => (
+                    pk.grad_at(i, j, -dx, dist),
+                    q.mass[j] * pk.dw_dh_own_at(i, dx, dist),
+                    0.0,
+                ),
+                (false, _) => (pk.grad_at(i, j, -dx, dist), 0.0, 0.0),
+            };
+            let dv = q.velocity[j] - q.velocity[i];
+            // A decoupled pair (fractured rock separating) shares no velocity gradient;
+            // it still counts in M and ∇P, as in Spheral's FSISPH.
+            let terms = PairGradients {
+                l: (!decoupled(ext, i, j, -dx, -dv)).then(|| D::Tensor::outer(dv, g)),
+                gp: g * (q.pressure[j] - q.pressure[i]),
+                ge: (energy && q.material[i] == q.material[j])
+                    .then(|| g * (q.specific_energy[j] - q.specific_energy[i])),
+                // M only where it is used (an outer product per pair).
+                m: moments.then(|| D::Tensor::outer(dx, g)),
+            };
+            terms.add_to(sums_i, q.volume[j], dwdh_i);
+            if let Some(sums_j) = to_j {
+                terms.add_to(sums_j, q.volume[i], dwdh_j);
             }
-            (true, false) => (
-                pk.grad_at(i, j, -dx, dist),
-                ext.mass[j] * pk.dw_dh_own_at(i, dx, dist),
-                0.0,
-            ),
-            (false, _) => (pk.grad_at(i, j, -dx, dist), 0.0, 0.0),
         };
-        let dv = ext.velocity[j] - ext.velocity[i];
-        // A decoupled pair (fractured rock separating) shares no velocity gradient;
-        // it still counts in M and ∇P, as in Spheral's FSISPH.
-        let terms = PairGradients {
-            l: (!decoupled(ext, i, j, -dx, -dv)).then(|| D::Tensor::outer(dv, g)),
-            gp: g * (ext.pressure[j] - ext.pressure[i]),
-            ge: (energy && ext.material[i] == ext.material[j])
-                .then(|| g * (ext.specific_energy[j] - ext.specific_energy[i])),
-            // M only where it is used (an outer product per pair).
-            m: moments.then(|| D::Tensor::outer(dx, g)),
-        };
-        terms.add_to(sums_i, volume[j], dwdh_i);
-        if let Some(sums_j) = to_j {
-            terms.add_to(sums_j, volume[i], dwdh_j);
-        }
-    };
     let finish = |i: usize, s: &Sums<D>| -> (Gradients<D>, D::Tensor) {
         let omega = if grad_h {
             1.0 + pk.h(i) / (d * eta(i)) * s.dwdh
@@ -251,15 +252,25 @@ fn gradients_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
                 },
             })
             .collect();
+        let q = Partner::cut(
+            ext,
+            &volume,
+            Columns {
+                damage: false,
+                rz: false,
+                astress_hoop: false,
+                energy,
+            },
+        );
         for i in start..end {
             for j in list.neighbors(i) {
                 let j = j as usize;
                 match pair_blocks::visit(i, j, start, end) {
                     pair_blocks::Visit::Done => {}
-                    pair_blocks::Visit::OwnOnly => add_pair(i, j, &mut sums[i - start], None),
+                    pair_blocks::Visit::OwnOnly => add_pair(&q, i, j, &mut sums[i - start], None),
                     pair_blocks::Visit::Both => {
                         let (lo, hi) = sums.split_at_mut(j - start);
-                        add_pair(i, j, &mut lo[i - start], Some(&mut hi[0]));
+                        add_pair(&q, i, j, &mut lo[i - start], Some(&mut hi[0]));
                     }
                 }
             }

@@ -69,6 +69,67 @@ fn volumes<D: Dimension, const RZ: bool>(ext: &Extended<'_, D>) -> Vec<f64> {
         .collect()
 }
 
+/// The columns a pair pass reads of a pair's partner j, each cut to the extended state's
+/// length m, so that one bounds test of j serves them all where the compiler would
+/// otherwise test j against each array's own length ([`Partner::cut`], once per block
+/// of rows, inlined into the pass). The columns not asked for are empty and never read.
+pub(super) struct Partner<'e, D: Dimension> {
+    /// x, v, ρ, P and c.
+    pub position: &'e [D::Vector],
+    pub velocity: &'e [D::Vector],
+    pub density: &'e [f64],
+    pub pressure: &'e [f64],
+    pub sound_speed: &'e [f64],
+    /// m, the material's index and, for a ghost, its source.
+    pub mass: &'e [f64],
+    pub material: &'e [u16],
+    pub source: &'e [u32],
+    /// D, where [`Columns::damage`].
+    pub damage: &'e [f64],
+    /// r and R̂, where [`Columns::rz`].
+    pub radius: &'e [f64],
+    pub smoothed_radius: &'e [f64],
+    /// R_θθ of the artificial stress, where [`Columns::astress_hoop`].
+    pub astress_hoop: &'e [f64],
+    /// e, where [`Columns::energy`].
+    pub specific_energy: &'e [f64],
+    /// Each particle's volume m/η ([`volumes`]), where given.
+    pub volume: &'e [f64],
+}
+
+/// Which of the optional columns [`Partner::cut`] keeps.
+pub(super) struct Columns {
+    pub damage: bool,
+    pub rz: bool,
+    pub astress_hoop: bool,
+    pub energy: bool,
+}
+
+impl<'e, D: Dimension> Partner<'e, D> {
+    /// The columns of `ext`, and `volume` unless it is empty, cut to the length of `ext`.
+    #[inline(always)]
+    pub fn cut(ext: &'e Extended<'_, D>, volume: &'e [f64], keep: Columns) -> Self {
+        let m = ext.position.len();
+        let opt = |on: bool, v: &'e [f64]| if on { &v[..m] } else { &v[..0] };
+        Partner {
+            position: &ext.position[..m],
+            velocity: &ext.velocity[..m],
+            density: &ext.density[..m],
+            pressure: &ext.pressure[..m],
+            sound_speed: &ext.sound_speed[..m],
+            mass: &ext.mass[..m],
+            material: &ext.material[..m],
+            source: &ext.source[..m],
+            damage: opt(keep.damage, &ext.damage),
+            radius: opt(keep.rz, &ext.radius),
+            smoothed_radius: opt(keep.rz, &ext.smoothed_radius),
+            astress_hoop: opt(keep.astress_hoop, &ext.astress_hoop),
+            specific_energy: opt(keep.energy, &ext.specific_energy),
+            volume: opt(!volume.is_empty(), volume),
+        }
+    }
+}
+
 mod gradients;
 mod rates;
 mod summation;

@@ -249,8 +249,8 @@ fn rates_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
     };
     // The pair (i, j), evaluated once: its approach speed and, unless it does not
     // interact, its shares for i and (with `both`) for j.
-    let eval = |i: usize, a: &Row<D>, j: usize, both: bool| -> PairEval<D> {
-        let r = a.x - ext.position[j];
+    let eval = |i: usize, a: &Row<D>, j: usize, both: bool, q: &Partner<D>| -> PairEval<D> {
+        let r = a.x - q.position[j];
         let dist = r.norm();
         if dist == 0.0 {
             // Coincident particles exert no force (∇W = 0) and define no axis.
@@ -265,15 +265,15 @@ fn rates_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
             return PairEval::QUIET;
         }
         let (vj, rhoj, pj, cj, mj) = (
-            ext.velocity[j],
-            ext.density[j],
-            ext.pressure[j],
-            ext.sound_speed[j],
-            ext.mass[j],
+            q.velocity[j],
+            q.density[j],
+            q.pressure[j],
+            q.sound_speed[j],
+            q.mass[j],
         );
         let (vi, rhoi, pi, ci, ri, di) = (a.v, a.rho, a.p, a.c, a.r, a.d);
-        let dj = if damaged { ext.damage[j] } else { 0.0 };
-        let same_material = a.material == ext.material[j];
+        let dj = if damaged { q.damage[j] } else { 0.0 };
+        let same_material = a.material == q.material[j];
         let vij = vi - vj;
         let approach = -vij.dot(r_hat);
         // Fractured rock separating in tension does not interact at all
@@ -294,7 +294,7 @@ fn rates_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
         let mut ge_pair = (D::Vector::ZERO, D::Vector::ZERO);
         if let Some(gr) = grads.map(|g| &g.each) {
             let gi = &gr[i];
-            let src = &gr[ext.source[j] as usize];
+            let src = &gr[q.source[j] as usize];
             // A ghost's gradients are its source's, mapped: M L Mᵀ and M ∇P.
             let m = &ext.map(j);
             let (lj, gpj) = if j < ext.n_real {
@@ -385,8 +385,8 @@ fn rates_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
             v_star += dv;
         }
 
-        let rj = radius(j);
-        let (etai, etaj) = (a.eta, rhoj * smooth_r(j));
+        let rj = if rz { q.radius[j] } else { 1.0 };
+        let (etai, etaj) = (a.eta, rhoj * if rz { q.smoothed_radius[j] } else { 1.0 });
         let r_bar = 0.5 * (ri + rj);
         let pi_ij = pair_rules::viscous_pressure(
             ext,
@@ -417,7 +417,7 @@ fn rates_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
                 g,
                 // f_ij for the hoop force only where a side has one: a row whose
                 // R_θθ is 0 adds no hoop force whatever its sum (`finish`).
-                rz && (ext.astress_hoop[i] != 0.0 || ext.astress_hoop[j] != 0.0),
+                rz && (q.astress_hoop[i] != 0.0 || q.astress_hoop[j] != 0.0),
             )
         } else {
             (D::Vector::ZERO, 0.0)
@@ -484,7 +484,7 @@ fn rates_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
             velocity: (vi, vj),
             density: (rhoi, rhoj),
             pressure: (pi, pj),
-            material: (a.material, ext.material[j]),
+            material: (a.material, q.material[j]),
             support: (pk.h(i), pk.h(j)),
         }) {
             f_pair += f;
@@ -521,7 +521,7 @@ fn rates_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
             v_star,
             pi_ij,
             f_astress,
-            if rz { volume[j] } else { 0.0 },
+            if rz { q.volume[j] } else { 0.0 },
         );
         let mut to_j = if both {
             let mi = ext.mass[i];
@@ -647,6 +647,16 @@ fn rates_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
         let mut own = vec![PairPart::<D>::ZERO; out.len()];
         let mut approach = vec![0.0_f64; out.len()];
         let mut boundary = Vec::new();
+        let q = Partner::cut(
+            ext,
+            if rz { &volume } else { &[] },
+            Columns {
+                damage: damaged,
+                rz,
+                astress_hoop: rz && use_astress,
+                energy: false,
+            },
+        );
         for i in start..end {
             let a = row(i);
             let k = i - start;
@@ -660,7 +670,7 @@ fn rates_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
                     pair_blocks::Visit::OwnOnly => false,
                     pair_blocks::Visit::Both => true,
                 };
-                let e = eval(i, &a, j, both);
+                let e = eval(i, &a, j, both, &q);
                 approach[k] = approach[k].max(e.approach);
                 if both {
                     approach[j - start] = approach[j - start].max(e.approach);

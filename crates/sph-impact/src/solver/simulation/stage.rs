@@ -332,9 +332,10 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
         };
         // A Verlet list's pairs of this stage, picked for the passes (simulation/verlet.rs);
         // the list itself is kept as searched.
-        let picked = ext
-            .skin
-            .then(|| list.retain_pairs(|i, j| ext.interacts(i, j as usize)));
+        let picked = ext.skin.then(|| {
+            let probe = ext.pair_probe();
+            list.retain_pairs(|i, j| probe.interacts(i, j as usize))
+        });
         let pairs = picked.as_ref().unwrap_or(&list);
         let search = t_search.elapsed().as_secs_f64();
         // The neighbours listed for the real particles (on several ranks from the blocks'

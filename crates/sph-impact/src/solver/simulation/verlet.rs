@@ -18,7 +18,7 @@
 //! same test covers the pairs with ghosts and the ghosts a placement would make now. The
 //! test is applied with a margin of 10⁻⁹ of the reach, far beyond the rounding of the
 //! distances it bounds. Each stage then picks from the list the pairs a search of its
-//! present supports would list, between live particles (`Extended::interacts`,
+//! present supports would list, between live particles (`Extended::pair_probe`,
 //! `NeighborList::retain_pairs`), each row in its order, so the passes sum the same terms
 //! in the same order as after a search of the stage's own.
 
