@@ -649,7 +649,7 @@ fn rates_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
         let mut boundary = Vec::new();
         let q = Partner::cut(
             ext,
-            if rz { &volume } else { &[] },
+            &volume,
             Columns {
                 damage: damaged,
                 rz,
