@@ -201,6 +201,8 @@ fn run_in_pool(
     // The validation `sph-impact check` runs: nothing it passes fails before stepping.
     let preflight = scene.preflight(options.resolution_scale, Some(end_time))?;
     let Built { simulation, bodies } = scene.build_placed(&preflight.placed)?;
+    // The placed bodies are in the simulation now: not held through the run.
+    drop(preflight);
     if !options.resume {
         directory::prepare_fresh(dir, true)?;
     }

@@ -421,6 +421,67 @@ impl<'a, D: Dimension> Extended<'a, D> {
         k >= self.n_real && self.ghost_unilateral[k - self.n_real]
     }
 
+    /// Frees the columns only the pair passes read, keeping those the stage reads after
+    /// them (the pressures, the damage and its tensor, the placed ghosts): the damage
+    /// rates that follow the passes then allocate theirs without the passes' columns
+    /// alive (the stage's memory peak).
+    pub fn release_pair_columns(&mut self) {
+        let Extended {
+            n_real: _,
+            position,
+            velocity,
+            mass,
+            density,
+            pressure: _,
+            sound_speed,
+            h,
+            h_tensor,
+            spacing0,
+            material,
+            source,
+            ghost_map,
+            ghost_unilateral,
+            real_stress: _,
+            ghost_stress,
+            damage: _,
+            coupling: _,
+            damage_tensor: _,
+            astress,
+            astress_on,
+            astress_hoop,
+            adhesion,
+            bulk_sound_speed,
+            specific_energy,
+            radius,
+            smoothed_radius,
+            placed: _,
+            live,
+            skin: _,
+        } = self;
+        *position = Vec::new();
+        *velocity = Vec::new();
+        *mass = Vec::new();
+        *density = Vec::new();
+        *sound_speed = Vec::new();
+        *h = Vec::new();
+        *h_tensor = Vec::new();
+        *spacing0 = Vec::new();
+        *material = Vec::new();
+        *source = Vec::new();
+        *ghost_map = Vec::new();
+        *ghost_unilateral = Vec::new();
+        *ghost_stress = Vec::new();
+        *astress = Vec::new();
+        *astress_on = Vec::new();
+        *astress_hoop = Vec::new();
+        *adhesion = Vec::new();
+        *bulk_sound_speed = Vec::new();
+        *specific_energy = Vec::new();
+        *radius = Vec::new();
+        *smoothed_radius = Vec::new();
+        *live = Vec::new();
+    }
+
     /// The test of a Verlet list's pairs at this stage ([`Self::skin`]; [`PairProbe`]).
     pub fn pair_probe(&self) -> PairProbe<D> {
         use rayon::prelude::*;

@@ -14,19 +14,15 @@ pub(crate) struct Gradients<D: Dimension> {
     /// `strain_rate_correction` is on). The Jaumann rate is formed from it when the stress
     /// is updated, so pass 2 does not hold a stress rate per particle.
     pub strain_velocity: D::Tensor,
-    /// ∇e from the same-material pairs, for the energy diffusion's reconstruction (zero
-    /// unless the extended state carries the specific energies).
-    pub energy: D::Vector,
 }
 
 impl<D: Dimension> Flat for Gradients<D> {
-    const LEN: usize = 2 * D::DIM * D::DIM + 2 * D::DIM + 1;
+    const LEN: usize = 2 * D::DIM * D::DIM + D::DIM + 1;
     fn put(&self, out: &mut Vec<f64>) {
         put_tensor(&self.velocity, out);
         put_vector(self.pressure, out);
         out.push(self.omega);
         put_tensor(&self.strain_velocity, out);
-        put_vector(self.energy, out);
     }
     fn get(v: &[f64]) -> Self {
         let (t, d) = (D::DIM * D::DIM, D::DIM);
@@ -35,19 +31,21 @@ impl<D: Dimension> Flat for Gradients<D> {
             pressure: get_vector(&v[t..]),
             omega: v[t + d],
             strain_velocity: get_tensor(&v[t + d + 1..]),
-            energy: get_vector(&v[2 * t + d + 1..]),
         }
     }
 }
 
-/// The result of pass 1: the gradients, and the linear gradient corrections M_i⁻ᵀ
-/// (identity where M is singular) only when `gradient_correction` or
-/// `momentum_correction` is on — otherwise
-/// empty, which saves a tensor per particle (72 bytes in 3-D) at the stage's memory peak.
+/// The result of pass 1: the gradients, and what only some schemes use, each empty
+/// otherwise, so that it costs no memory at the stage's peak where it is not used: the
+/// linear gradient corrections M_i⁻ᵀ (identity where M is singular) when
+/// `gradient_correction` or `momentum_correction` is on (72 bytes per particle in 3-D),
+/// and ∇e from the same-material pairs, for the energy diffusion's reconstruction, when
+/// the extended state carries the specific energies (24 bytes).
 #[derive(Clone, Debug)]
 pub(crate) struct GradientSet<D: Dimension> {
     pub each: Vec<Gradients<D>>,
     pub correction: Vec<D::Tensor>,
+    pub energy: Vec<D::Vector>,
 }
 
 /// What pass 1 must produce beyond ∇v and ∇P.
@@ -189,7 +187,7 @@ fn gradients_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
                 terms.add_to(sums_j, q.volume[i], dwdh_j);
             }
         };
-    let finish = |i: usize, s: &Sums<D>| -> (Gradients<D>, D::Tensor) {
+    let finish = |i: usize, s: &Sums<D>| -> (Gradients<D>, D::Tensor, D::Vector) {
         let omega = if grad_h {
             1.0 + pk.h(i) / (d * eta(i)) * s.dwdh
         } else {
@@ -217,9 +215,9 @@ fn gradients_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
                     pressure: mi.transpose().mul_vec(s.gp),
                     omega,
                     strain_velocity,
-                    energy: mi.transpose().mul_vec(s.ge),
                 },
                 c,
+                mi.transpose().mul_vec(s.ge),
             ),
             _ => (
                 Gradients {
@@ -227,16 +225,20 @@ fn gradients_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
                     pressure: s.gp,
                     omega,
                     strain_velocity,
-                    energy: s.ge,
                 },
                 c,
+                s.ge,
             ),
         }
     };
     // Each block of rows sums its pairs (pair_blocks.rs), then finishes its rows.
     let n = ext.n_real;
     let keep = correct || keep_correction;
-    let fill = |b: usize, out: &mut [Gradients<D>], mut corr: Option<&mut [D::Tensor]>| {
+    // Each block's rows: their gradients, and where kept their corrections and ∇e.
+    let fill = |b: usize,
+                out: &mut [Gradients<D>],
+                mut corr: Option<&mut [D::Tensor]>,
+                mut grad_e: Option<&mut [D::Vector]>| {
         let (start, end) = (b * rows, b * rows + out.len());
         let mut sums: Vec<Sums<D>> = (start..end)
             .map(|i| Sums {
@@ -276,10 +278,13 @@ fn gradients_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
             }
         }
         for (k, s) in sums.iter().enumerate() {
-            let (g, c) = finish(start + k, s);
+            let (g, c, ge) = finish(start + k, s);
             out[k] = g;
             if let Some(corr) = corr.as_deref_mut() {
                 corr[k] = c;
+            }
+            if let Some(grad_e) = grad_e.as_deref_mut() {
+                grad_e[k] = ge;
             }
         }
     };
@@ -288,7 +293,6 @@ fn gradients_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
         pressure: D::Vector::ZERO,
         omega: 1.0,
         strain_velocity: D::Tensor::ZERO,
-        energy: D::Vector::ZERO,
     };
     let mut each = vec![unset; n];
     let mut correction = if keep {
@@ -296,21 +300,42 @@ fn gradients_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
     } else {
         Vec::new()
     };
+    let mut grad_e = if energy {
+        vec![D::Vector::ZERO; n]
+    } else {
+        Vec::new()
+    };
     // Only the blocks `blocks` (this rank's; solver/ranks.rs): the other rows stay unset.
     let own = pair_blocks::rows_of(&blocks, rows, n);
-    if keep {
-        each[own.clone()]
-            .par_chunks_mut(rows)
-            .zip(correction[own].par_chunks_mut(rows))
-            .enumerate()
-            .for_each(|(b, (out, corr))| fill(blocks.start + b, out, Some(corr)));
-    } else {
-        each[own]
-            .par_chunks_mut(rows)
-            .enumerate()
-            .for_each(|(b, out)| fill(blocks.start + b, out, None));
+    let n_blocks = own.len().div_ceil(rows);
+    let corr = block_chunks(&mut correction, &own, rows, n_blocks);
+    let ge = block_chunks(&mut grad_e, &own, rows, n_blocks);
+    each[own]
+        .par_chunks_mut(rows)
+        .zip(corr)
+        .zip(ge)
+        .enumerate()
+        .for_each(|(b, ((out, corr), ge))| fill(blocks.start + b, out, corr, ge));
+    GradientSet {
+        each,
+        correction,
+        energy: grad_e,
     }
-    GradientSet { each, correction }
+}
+
+/// The rows `own` of an optional column, in blocks of `rows` (`n_blocks` of them), or
+/// `None` for every block where the column is not kept (empty).
+fn block_chunks<'a, T: Send>(
+    column: &'a mut [T],
+    own: &Range<usize>,
+    rows: usize,
+    n_blocks: usize,
+) -> Vec<Option<&'a mut [T]>> {
+    if column.is_empty() {
+        (0..n_blocks).map(|_| None).collect()
+    } else {
+        column[own.clone()].chunks_mut(rows).map(Some).collect()
+    }
 }
 
 /// M⁻¹ if M is invertible and not too far from the identity (condition number of its

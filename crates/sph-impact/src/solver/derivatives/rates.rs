@@ -292,7 +292,8 @@ fn rates_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
         // gradients, for the energy diffusion.
         let mut l_pair = None;
         let mut ge_pair = (D::Vector::ZERO, D::Vector::ZERO);
-        if let Some(gr) = grads.map(|g| &g.each) {
+        if let Some(set) = grads {
+            let gr = &set.each;
             let gi = &gr[i];
             let src = &gr[q.source[j] as usize];
             // A ghost's gradients are its source's, mapped: M L Mᵀ and M ∇P.
@@ -307,12 +308,13 @@ fn rates_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
             };
             l_pair = Some((gi.velocity, lj));
             if diffuse {
+                let src_e = set.energy[q.source[j] as usize];
                 ge_pair = (
-                    gi.energy,
+                    set.energy[i],
                     if j < ext.n_real {
-                        src.energy
+                        src_e
                     } else {
-                        m.mul_vec(src.energy)
+                        m.mul_vec(src_e)
                     },
                 );
             }

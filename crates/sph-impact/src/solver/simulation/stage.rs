@@ -73,6 +73,15 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
                     ranks::get_tensor::<D::Tensor>,
                 );
             }
+            if !g.energy.is_empty() {
+                halo.fill_by(
+                    ranks,
+                    &mut g.energy,
+                    D::DIM,
+                    |v, out| ranks::put_vector(*v, out),
+                    ranks::get_vector::<D::Vector>,
+                );
+            }
             // Every rank's per-particle work reads every particle's strain-rate
             // gradient (the stress update, the viscosity switch, the tensor damage's
             // spin) and, with ASPH, ∇v (the smoothing tensor's evolution).
@@ -416,6 +425,10 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
             };
             self.pair_passes(&ext, pairs, &pk, options, blocks, ranks)
         };
+        // The pairs are spent: free this stage's picked list and the columns only the
+        // passes read before the damage rates allocate theirs.
+        drop(picked);
+        ext.release_pair_columns();
         let PairRates {
             each: mut rates_out,
             boundary,
@@ -497,7 +510,6 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
         self.timings.neighbour_entries += entries;
         let mut pressure_d = std::mem::take(&mut ext.pressure);
         pressure_d.truncate(n_real);
-        drop(picked);
         let topology = keep.then(|| Topology {
             list,
             ghosts: std::mem::take(&mut ext.placed),
