@@ -364,6 +364,17 @@ impl Default for SchemeConfig {
 }
 
 impl SchemeConfig {
+    /// Whether pass 2 runs its loop compiled with the paper's choices of the scheme as
+    /// constants (the limiter, the Riemann solver and its damage coupling, the energy,
+    /// density and momentum forms, the stress coupling, the plain viscosity, unbonded
+    /// interfaces, no corrections, no density stabilisation or energy diffusion: those
+    /// of [`SchemeConfig::default`]), which executes fewer instructions per pair than
+    /// the loop that reads them. The results are the same to the bit either way
+    /// (docs/performance.md, "The scheme's choices as constants of the pair loop").
+    pub fn takes_study_pair_loop(&self) -> bool {
+        crate::solver::derivatives::PairScheme::is_study(self)
+    }
+
     /// Default of [`Self::fragment_density_ratio`]: a solid expanded to half its
     /// reference density has certainly come apart, and no intact or merely cracked
     /// material of an impact (spall plates, crater walls, compressed rock) gets there.

@@ -192,6 +192,9 @@ pub struct Simulation<D: Dimension, K: Kernel, R: PairRule<D> = NoPairRule> {
     /// Rows per block of the pair passes; None: the automatic size. See
     /// [`Self::set_pair_block_rows`].
     pair_block_rows: Option<usize>,
+    /// Whether the pair passes always run their loops that read the scheme's choices
+    /// (see [`Self::set_generic_pair_loop`]).
+    generic_pair_loop: bool,
     kernel: K,
     /// The user's own pair force (`with_pair_rule`); `NoPairRule` by default.
     pair_rule: R,
@@ -321,6 +324,7 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
             held: Vec::new(),
             first_dt: None,
             pair_block_rows: None,
+            generic_pair_loop: false,
             radius0,
             smoothed_radius: rz.then(|| {
                 SmoothedRadius::new(|u, v| {
@@ -357,6 +361,7 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
             radius0: self.radius0,
             first_dt: self.first_dt,
             pair_block_rows: self.pair_block_rows,
+            generic_pair_loop: self.generic_pair_loop,
             kernel: self.kernel,
             pair_rule: rule,
             search: self.search,
@@ -382,6 +387,17 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
             "a block of the pair passes needs at least one row"
         );
         self.pair_block_rows = rows;
+    }
+
+    /// Whether the pair passes run, for every scheme, their loops that read the scheme's
+    /// choices per pair. By default (`false`) a scheme that makes the paper's choices
+    /// runs loops compiled with them as constants, which execute fewer instructions
+    /// (solver/derivatives/pair_scheme.rs, and `GradientOptions::STUDY` for pass 1); both
+    /// do the same arithmetic in the same order, so results are the same to the bit
+    /// either way, which is what this setting is for: tests/pair_scheme.rs compares the
+    /// two.
+    pub fn set_generic_pair_loop(&mut self, generic: bool) {
+        self.generic_pair_loop = generic;
     }
 
     /// Holds the velocity of the particles at `indices` at their current value for the

@@ -49,7 +49,7 @@ pub(crate) struct GradientSet<D: Dimension> {
 }
 
 /// What pass 1 must produce beyond ∇v and ∇P.
-#[derive(Clone, Copy, Debug, Default)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub(crate) struct GradientOptions {
     /// Linear-corrected ∇v, ∇P and ∇e (`gradient_correction`).
     pub correct: bool,
@@ -62,6 +62,22 @@ pub(crate) struct GradientOptions {
 }
 
 impl GradientOptions {
+    /// The study's scheme on a solid (`SchemeConfig::default` with strength): the
+    /// strain rate linearly corrected, the grad-h factor, no other correction.
+    pub const STUDY: Self = GradientOptions {
+        correct: false,
+        correct_strain: true,
+        keep_correction: false,
+        grad_h: true,
+    };
+
+    /// Whether pass 1 over `ext` runs with the study's choices: these options, no
+    /// energy gradient (no specific energies carried) and no decoupling of fractured
+    /// material (no adhesion flags).
+    fn is_study<D: Dimension>(&self, ext: &Extended<'_, D>) -> bool {
+        *self == Self::STUDY && ext.specific_energy.is_empty() && ext.adhesion.is_empty()
+    }
+
     /// Whether the moment matrix M (and its inverse) is needed.
     fn needs_moments(&self) -> bool {
         self.correct || self.correct_strain || self.keep_correction
@@ -109,20 +125,32 @@ impl<D: Dimension> PairGradients<D> {
 }
 
 /// Pass 1 over the blocks of rows `blocks` (of `rows` rows each; all of them in a single
-/// process).
+/// process). With `generic` the loop that reads the options runs even where they are
+/// the study's.
 pub(crate) fn gradients<D: Dimension, P: PairKernel<D>>(
     ext: &Extended<'_, D>,
     list: &NeighborList,
     pk: &P,
     options: GradientOptions,
-    rows: usize,
-    blocks: Range<usize>,
+    (rows, blocks): (usize, Range<usize>),
+    generic: bool,
 ) -> GradientSet<D> {
-    per_geometry!(gradients_in(ext, list, pk, options, rows, blocks))
+    // The study's options as constants of the loop where they are the run's
+    // (`GradientOptions::STUDY`, as pair_scheme.rs does for pass 2) unless `generic`
+    // asks for the loop that reads them; the same arithmetic either way.
+    let study = !generic && options.is_study(ext);
+    match (is_rz(ext), study) {
+        (true, true) => gradients_in::<D, P, true, true>(ext, list, pk, options, rows, blocks),
+        (true, false) => gradients_in::<D, P, true, false>(ext, list, pk, options, rows, blocks),
+        (false, true) => gradients_in::<D, P, false, true>(ext, list, pk, options, rows, blocks),
+        (false, false) => gradients_in::<D, P, false, false>(ext, list, pk, options, rows, blocks),
+    }
 }
 
-/// [`gradients`] for one geometry (`RZ`), fixed at compile time.
-fn gradients_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
+/// [`gradients`] for one geometry (`RZ`) and, with `STUDY`, the study's options
+/// ([`GradientOptions::STUDY`], no energy gradient, no decoupling), fixed at compile
+/// time.
+fn gradients_in<D: Dimension, P: PairKernel<D>, const RZ: bool, const STUDY: bool>(
     ext: &Extended<'_, D>,
     list: &NeighborList,
     pk: &P,
@@ -154,6 +182,13 @@ fn gradients_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
     // partner's volume, the same product for both sides (both factors change sign).
     let add_pair =
         |q: &Partner<D>, i: usize, j: usize, sums_i: &mut Sums<D>, to_j: Option<&mut Sums<D>>| {
+            // The choices, constants of this closure's code with STUDY (it runs on the
+            // pool's threads, where a captured value would be a load).
+            let (grad_h, moments, energy, decouple) = if STUDY {
+                (true, true, false, false)
+            } else {
+                (grad_h, moments, energy, true)
+            };
             let xi = q.position[i];
             let dx = q.position[j] - xi;
             let dist = dx.norm();
@@ -175,7 +210,7 @@ fn gradients_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
             // A decoupled pair (fractured rock separating) shares no velocity gradient;
             // it still counts in M and ∇P, as in Spheral's FSISPH.
             let terms = PairGradients {
-                l: (!decoupled(ext, i, j, -dx, -dv)).then(|| D::Tensor::outer(dv, g)),
+                l: (!(decouple && decoupled(ext, i, j, -dx, -dv))).then(|| D::Tensor::outer(dv, g)),
                 gp: g * (q.pressure[j] - q.pressure[i]),
                 ge: (energy && q.material[i] == q.material[j])
                     .then(|| g * (q.specific_energy[j] - q.specific_energy[i])),

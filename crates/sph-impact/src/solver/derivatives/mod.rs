@@ -19,7 +19,8 @@
 //!
 //! Files: `summation.rs` (summation density), `gradients.rs` (pass 1), `switch.rs` (the
 //! viscosity switch's factors from pass 1), `rates.rs` (pass 2, which calls the pair rules
-//! of `solver/pair_rules/`).
+//! of `solver/pair_rules/`), `pair_scheme.rs` (the scheme's choices pass 2 makes per pair,
+//! constants of its loop for the study's scheme).
 
 use crate::solver::config::{DensityForm, EnergyForm, MomentumForm, SchemeConfig};
 use crate::solver::pair_blocks;
@@ -131,10 +132,12 @@ impl<'e, D: Dimension> Partner<'e, D> {
 }
 
 mod gradients;
+mod pair_scheme;
 mod rates;
 mod summation;
 mod switch;
 
 pub(crate) use gradients::{GradientOptions, GradientSet, gradients};
+pub(crate) use pair_scheme::PairScheme;
 pub(crate) use rates::{PairRates, Rates, rates};
 pub(crate) use summation::summation_density;

@@ -2,6 +2,7 @@
 //! the pair rules of `solver/pair_rules/` and, in RZ, the hoop gauge and the artificial
 //! stress' hoop part.
 
+use super::pair_scheme::PairScheme;
 use super::switch::viscosity_switch_factors;
 use super::*;
 use crate::solver::pair_rules::{PairRule, PairView};
@@ -156,21 +157,40 @@ pub(crate) struct PairRates<D: Dimension> {
 
 /// Pass 2 over the blocks of rows `blocks` (of `rows` rows each; all of them in a single
 /// process): the other rows' rates and hoop gauges stay unset, and `boundary` lists
-/// only these blocks' particles.
+/// only these blocks' particles. With `generic` the loop that reads the scheme's
+/// choices runs even where the scheme is the study's (pair_scheme.rs).
 pub(crate) fn rates<D: Dimension, P: PairKernel<D>>(
     ext: &Extended<'_, D>,
     list: &NeighborList,
     pk: &P,
     grads: Option<&GradientSet<D>>,
-    scheme: &SchemeConfig,
+    (scheme, generic): (&SchemeConfig, bool),
     (rows, blocks): (usize, Range<usize>),
     rule: &impl PairRule<D>,
 ) -> PairRates<D> {
-    per_geometry!(rates_in(ext, list, pk, grads, scheme, rows, blocks, rule))
+    // The study's choices as constants of the loop where the scheme makes them, unless
+    // `generic` asks for the loop that reads them (pair_scheme.rs); the same arithmetic
+    // either way.
+    let study = !generic && PairScheme::is_study(scheme);
+    match (is_rz(ext), study) {
+        (true, true) => {
+            rates_in::<D, P, true, true>(ext, list, pk, grads, scheme, rows, blocks, rule)
+        }
+        (true, false) => {
+            rates_in::<D, P, true, false>(ext, list, pk, grads, scheme, rows, blocks, rule)
+        }
+        (false, true) => {
+            rates_in::<D, P, false, true>(ext, list, pk, grads, scheme, rows, blocks, rule)
+        }
+        (false, false) => {
+            rates_in::<D, P, false, false>(ext, list, pk, grads, scheme, rows, blocks, rule)
+        }
+    }
 }
 
-/// [`rates`] for one geometry (`RZ`), fixed at compile time.
-fn rates_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
+/// [`rates`] for one geometry (`RZ`) and, with `STUDY`, the study's choices of the
+/// scheme ([`PairScheme::study`]), fixed at compile time.
+fn rates_in<D: Dimension, P: PairKernel<D>, const RZ: bool, const STUDY: bool>(
     ext: &Extended<'_, D>,
     list: &NeighborList,
     pk: &P,
@@ -180,23 +200,21 @@ fn rates_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
     blocks: Range<usize>,
     rule: &impl PairRule<D>,
 ) -> PairRates<D> {
-    let visc = scheme.viscosity;
+    // What the loop reads of the scheme per pair: constants when STUDY. Each closure
+    // below that runs on the pool's threads picks them itself, so that they are
+    // constants of its own code (a captured value would be a load).
+    let ps = PairScheme::pick::<STUDY>(scheme);
     let solid = ext.has_stress();
     let damaged = !ext.damage.is_empty();
     let astress = scheme.artificial_stress;
     let use_astress = !ext.astress.is_empty();
-    // FSISPH's energy diffusion (its ∇e is read per pair only then).
-    let diffuse = scheme.energy_diffusion > 0.0 && !ext.specific_energy.is_empty();
-    // The momentum equation's gradient corrections M⁻ᵀ of the real particles, when on.
-    let momentum_corrections = match grads {
-        Some(gr) if scheme.momentum_correction => Some(&gr.correction),
-        _ => None,
-    };
-    // The continuity equation's corrections, when on.
-    let continuity_corrections = match grads {
-        Some(gr) if scheme.gradient_correction => Some(&gr.correction),
-        _ => None,
-    };
+    // FSISPH's energy diffusion reads the specific energies and pass 1's ∇e (empty
+    // otherwise).
+    let carries_energy = !ext.specific_energy.is_empty();
+    let grad_e: &[D::Vector] = grads.map_or(&[], |g| &g.energy);
+    // The gradient corrections M⁻ᵀ of the real particles, for the momentum and the
+    // continuity equations where the scheme asks for them.
+    let corrections = grads.map(|g| g.correction.as_slice());
     // RZ: the pair terms carry the weights r (pressure and stress r σ, density η = ρ r;
     // axisymmetric.rs); Cartesian runs have r = 1 throughout.
     let rz = RZ;
@@ -240,16 +258,20 @@ fn rates_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
         d: if damaged { ext.damage[i] } else { 0.0 },
         eta: ext.density[i] * smooth_r(i),
     };
-    // One side's share of the pair (`share`), with what it reads of the scheme.
-    let sharing = Sharing {
-        continuity_corrections: continuity_corrections.map(Vec::as_slice),
-        density: scheme.density,
-        energy: scheme.energy,
-        solid,
-    };
     // The pair (i, j), evaluated once: its approach speed and, unless it does not
     // interact, its shares for i and (with `both`) for j.
     let eval = |i: usize, a: &Row<D>, j: usize, both: bool, q: &Partner<D>| -> PairEval<D> {
+        let ps = PairScheme::pick::<STUDY>(scheme);
+        let visc = ps.viscosity;
+        let diffuse = ps.energy_diffusion > 0.0 && carries_energy;
+        let momentum_corrections = corrections.filter(|_| ps.momentum_correction);
+        // One side's share of the pair (`share`), with what it reads of the scheme.
+        let sharing = Sharing {
+            continuity_corrections: corrections.filter(|_| ps.gradient_correction),
+            density: ps.density,
+            energy: ps.energy,
+            solid,
+        };
         let r = a.x - q.position[j];
         let dist = r.norm();
         if dist == 0.0 {
@@ -292,8 +314,7 @@ fn rates_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
         // gradients, for the energy diffusion.
         let mut l_pair = None;
         let mut ge_pair = (D::Vector::ZERO, D::Vector::ZERO);
-        if let Some(set) = grads {
-            let gr = &set.each;
+        if let Some(gr) = grads.map(|g| &g.each) {
             let gi = &gr[i];
             let src = &gr[q.source[j] as usize];
             // A ghost's gradients are its source's, mapped: M L Mᵀ and M ∇P.
@@ -308,9 +329,9 @@ fn rates_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
             };
             l_pair = Some((gi.velocity, lj));
             if diffuse {
-                let src_e = set.energy[q.source[j] as usize];
+                let src_e = grad_e[q.source[j] as usize];
                 ge_pair = (
-                    set.energy[i],
+                    grad_e[i],
                     if j < ext.n_real {
                         src_e
                     } else {
@@ -321,14 +342,8 @@ fn rates_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
             let half = r * 0.5;
             let dui = r_hat.dot(gi.velocity.mul_vec(-half));
             let duj = r_hat.dot(lj.mul_vec(half));
-            (ui, uj) = reconstruct(ui, uj, dui, duj, scheme.limiter);
-            (pfi, pfj) = reconstruct(
-                pi,
-                pj,
-                gi.pressure.dot(-half),
-                gpj.dot(half),
-                scheme.limiter,
-            );
+            (ui, uj) = reconstruct(ui, uj, dui, duj, ps.limiter);
+            (pfi, pfj) = reconstruct(pi, pj, gi.pressure.dot(-half), gpj.dot(half), ps.limiter);
         }
         let right = SideState {
             density: rhoi,
@@ -353,14 +368,14 @@ fn rates_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
                 damage_j: dj,
                 same_material,
             },
-            scheme.riemann,
-            scheme.coupling,
+            ps.riemann,
+            ps.coupling,
         );
         // FSISPH's density stabilisation (Spheral SolidFSISPHEvaluateDerivatives.cc):
         // within one material, v* += f_D κ c̄ (1 + min(0, max(−1, v_ij·r̂/c̄)))
         // clamp((P_j − P_i)/(K_i + K_j), ±¼) r̂, with K + 4G/3 = ρ c_L² and the
         // reconstructed pressures; symmetric in (i, j), so conservation is unchanged.
-        if scheme.density_stabilization > 0.0
+        if ps.density_stabilization > 0.0
             && same_material
             && let Some(dv) = pair_rules::density_stabilization(
                 ext,
@@ -379,7 +394,7 @@ fn rates_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
                         d: dj,
                     },
                 ),
-                scheme.density_stabilization,
+                ps.density_stabilization,
                 vij,
                 r_hat,
             )
@@ -426,16 +441,16 @@ fn rates_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
         };
         // The pressure part of the pair force: the particles' pressures (the
         // study's σ_i + σ_j), or twice the pair's Riemann star pressure.
-        let p_pair = match scheme.momentum {
+        let p_pair = match ps.momentum {
             MomentumForm::ParticlePressure => ri * pi + rj * pj,
-            MomentumForm::StarPressure => 2.0 * r_bar * scheme.riemann.star(&left, &right).pressure,
+            MomentumForm::StarPressure => 2.0 * r_bar * ps.riemann.star(&left, &right).pressure,
         };
         // The pair's deviatoric stresses, weakened by damage: each particle's own
         // (1 − D) across a material interface, the scheme's coupling within a body.
         let (si, sj) = if solid {
             pair_rules::coupled_stresses(
                 ext,
-                &scheme.stress_coupling,
+                &ps.stress_coupling,
                 (i, j),
                 a.s_undamaged,
                 (di, dj),
@@ -452,7 +467,7 @@ fn rates_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
         let mut f_pair = match momentum_corrections {
             // σ_i (C_i∇W) + σ_j (C_j∇W), C = M⁻ᵀ (a ghost's is its source's, mapped
             // like a tensor): antisymmetric in (i, j) like the plain form.
-            Some(c) if scheme.momentum == MomentumForm::ParticlePressure => {
+            Some(c) if ps.momentum == MomentumForm::ParticlePressure => {
                 let cj = if j < ext.n_real {
                     c[j]
                 } else {
@@ -497,7 +512,7 @@ fn rates_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
         // no density or energy change, so the opening gap does not stretch either
         // side). The test is the same for (i, j) and (j, i), so momentum balances.
         let contact = ext.is_unilateral(j);
-        if !contact && scheme.unbonded_interfaces && !same_material && force.dot(r_hat) < 0.0 {
+        if !contact && ps.unbonded_interfaces && !same_material && force.dot(r_hat) < 0.0 {
             return PairEval {
                 approach,
                 ..PairEval::QUIET
@@ -560,7 +575,7 @@ fn rates_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
             let diffusion = pair_rules::energy_diffusion(
                 ext,
                 (i, j),
-                scheme.energy_diffusion,
+                ps.energy_diffusion,
                 &DiffusionPair {
                     energy_gradients: ge_pair,
                     r,
@@ -632,7 +647,7 @@ fn rates_in<D: Dimension, P: PairKernel<D>, const RZ: bool>(
                 let mut a = D::Vector::ZERO;
                 a.set_component(0, a_r);
                 out.dv += a;
-                if scheme.energy == EnergyForm::Study {
+                if ps.energy == EnergyForm::Study {
                     out.de -= ext.velocity[i].component(0) * a_r;
                 }
             }

@@ -54,7 +54,16 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
             .iter()
             .map(|b| pair_blocks::rows_of(b, rows, n))
             .collect();
-        let mut g = options.map(|o| gradients(ext, list, pk, o, rows, mine.clone()));
+        let mut g = options.map(|o| {
+            gradients(
+                ext,
+                list,
+                pk,
+                o,
+                (rows, mine.clone()),
+                self.generic_pair_loop,
+            )
+        });
         let t = Instant::now();
         if size > 1
             && let Some(g) = &mut g
@@ -113,7 +122,7 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
             list,
             pk,
             g.as_ref(),
-            &self.scheme,
+            (&self.scheme, self.generic_pair_loop),
             (rows, mine),
             &self.pair_rule,
         );
