@@ -2,6 +2,7 @@
 
 pub mod axisymmetric;
 pub mod boundary;
+mod chunks;
 pub mod config;
 mod damage;
 mod derivatives;

@@ -59,17 +59,12 @@ use verlet::SkinBuild;
 const PASS_CHUNK: usize = 512;
 
 /// `v` by chunks of [`PASS_CHUNK`] as `Some`, or `n_chunks` times `None` when `v` is
-/// empty (an array the run does not have), to be zipped with the chunks of the arrays a
-/// pass always writes.
+/// empty ([`crate::solver::chunks::chunks_or_none`]).
 fn chunks_or_none<T: Send>(
     v: &mut [T],
     n_chunks: usize,
 ) -> impl IndexedParallelIterator<Item = Option<&mut [T]>> {
-    if v.is_empty() {
-        rayon::iter::Either::Left((0..n_chunks).into_par_iter().map(|_| None))
-    } else {
-        rayon::iter::Either::Right(v.par_chunks_mut(PASS_CHUNK).map(Some))
-    }
+    crate::solver::chunks::chunks_or_none(v, PASS_CHUNK, n_chunks)
 }
 
 /// Wall-clock seconds spent per phase, and the work done.

@@ -2,6 +2,7 @@
 //! correction M⁻¹ and the grad-h factor Ω, from sums over its neighbours.
 
 use super::*;
+use crate::solver::chunks::chunks_or_none;
 
 /// Per-particle gradients (pass 1).
 #[derive(Clone, Copy, Debug)]
@@ -139,12 +140,7 @@ pub(crate) fn gradients<D: Dimension, P: PairKernel<D>>(
     // (`GradientOptions::STUDY`, as pair_scheme.rs does for pass 2) unless `generic`
     // asks for the loop that reads them; the same arithmetic either way.
     let study = !generic && options.is_study(ext);
-    match (is_rz(ext), study) {
-        (true, true) => gradients_in::<D, P, true, true>(ext, list, pk, options, rows, blocks),
-        (true, false) => gradients_in::<D, P, true, false>(ext, list, pk, options, rows, blocks),
-        (false, true) => gradients_in::<D, P, false, true>(ext, list, pk, options, rows, blocks),
-        (false, false) => gradients_in::<D, P, false, false>(ext, list, pk, options, rows, blocks),
-    }
+    per_case!(gradients_in(ext, list, pk, options, rows, blocks), study)
 }
 
 /// [`gradients`] for one geometry (`RZ`) and, with `STUDY`, the study's options
@@ -185,7 +181,8 @@ fn gradients_in<D: Dimension, P: PairKernel<D>, const RZ: bool, const STUDY: boo
             // The choices, constants of this closure's code with STUDY (it runs on the
             // pool's threads, where a captured value would be a load).
             let (grad_h, moments, energy, decouple) = if STUDY {
-                (true, true, false, false)
+                let o = GradientOptions::STUDY;
+                (o.grad_h, o.needs_moments(), false, false)
             } else {
                 (grad_h, moments, energy, true)
             };
@@ -343,8 +340,12 @@ fn gradients_in<D: Dimension, P: PairKernel<D>, const RZ: bool, const STUDY: boo
     // Only the blocks `blocks` (this rank's; solver/ranks.rs): the other rows stay unset.
     let own = pair_blocks::rows_of(&blocks, rows, n);
     let n_blocks = own.len().div_ceil(rows);
-    let corr = block_chunks(&mut correction, &own, rows, n_blocks);
-    let ge = block_chunks(&mut grad_e, &own, rows, n_blocks);
+    // An optional column's own rows, or nothing where the column is not kept.
+    fn rows_or_empty<'a, T>(v: &'a mut [T], own: &Range<usize>) -> &'a mut [T] {
+        if v.is_empty() { v } else { &mut v[own.clone()] }
+    }
+    let corr = chunks_or_none(rows_or_empty(&mut correction, &own), rows, n_blocks);
+    let ge = chunks_or_none(rows_or_empty(&mut grad_e, &own), rows, n_blocks);
     each[own]
         .par_chunks_mut(rows)
         .zip(corr)
@@ -355,21 +356,6 @@ fn gradients_in<D: Dimension, P: PairKernel<D>, const RZ: bool, const STUDY: boo
         each,
         correction,
         energy: grad_e,
-    }
-}
-
-/// The rows `own` of an optional column, in blocks of `rows` (`n_blocks` of them), or
-/// `None` for every block where the column is not kept (empty).
-fn block_chunks<'a, T: Send>(
-    column: &'a mut [T],
-    own: &Range<usize>,
-    rows: usize,
-    n_blocks: usize,
-) -> Vec<Option<&'a mut [T]>> {
-    if column.is_empty() {
-        (0..n_blocks).map(|_| None).collect()
-    } else {
-        column[own.clone()].chunks_mut(rows).map(Some).collect()
     }
 }
 

@@ -52,6 +52,20 @@ macro_rules! per_geometry {
     };
 }
 
+/// Calls `f::<D, P, RZ, STUDY>(ext, args…)` with `RZ` the geometry of `ext` ([`is_rz`])
+/// and `STUDY` the flag `$study`: the pair passes' loop for the study's choices as
+/// constants (pair_scheme.rs) or the one that reads them.
+macro_rules! per_case {
+    ($f:ident($ext:expr $(, $arg:expr)*), $study:expr) => {
+        match (is_rz($ext), $study) {
+            (true, true) => $f::<D, P, true, true>($ext $(, $arg)*),
+            (true, false) => $f::<D, P, true, false>($ext $(, $arg)*),
+            (false, true) => $f::<D, P, false, true>($ext $(, $arg)*),
+            (false, false) => $f::<D, P, false, false>($ext $(, $arg)*),
+        }
+    };
+}
+
 /// Each particle's volume m/η, real and ghost (η = ρ R̂ in RZ, ρ otherwise): the weight of
 /// its terms in its partners' sums, computed once per particle rather than by a division
 /// per pair side (the same division, so the same bits as a pair's own).

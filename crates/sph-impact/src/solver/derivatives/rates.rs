@@ -172,20 +172,10 @@ pub(crate) fn rates<D: Dimension, P: PairKernel<D>>(
     // `generic` asks for the loop that reads them (pair_scheme.rs); the same arithmetic
     // either way.
     let study = !generic && PairScheme::is_study(scheme);
-    match (is_rz(ext), study) {
-        (true, true) => {
-            rates_in::<D, P, true, true>(ext, list, pk, grads, scheme, rows, blocks, rule)
-        }
-        (true, false) => {
-            rates_in::<D, P, true, false>(ext, list, pk, grads, scheme, rows, blocks, rule)
-        }
-        (false, true) => {
-            rates_in::<D, P, false, true>(ext, list, pk, grads, scheme, rows, blocks, rule)
-        }
-        (false, false) => {
-            rates_in::<D, P, false, false>(ext, list, pk, grads, scheme, rows, blocks, rule)
-        }
-    }
+    per_case!(
+        rates_in(ext, list, pk, grads, scheme, rows, blocks, rule),
+        study
+    )
 }
 
 /// [`rates`] for one geometry (`RZ`) and, with `STUDY`, the study's choices of the
