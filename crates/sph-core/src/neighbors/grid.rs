@@ -231,43 +231,54 @@ impl CellList {
             .map(|c| {
                 let range = c * CHUNK..((c + 1) * CHUNK).min(n);
                 let mut chunk = Chunk::with_rows(range.start, range.len());
-                let mut row = Vec::new();
-                let mut one_sided = Vec::new();
+                // The row being gathered: its first `found` entries (the rest is room the
+                // queries write into without growing it).
+                let mut row: Vec<u32> = Vec::new();
+                let mut one_sided: Vec<(u32, u32)> = Vec::new();
+                let mut sided = 0;
                 let mut candidates = vec![0u64; levels.len()];
                 for i in range {
-                    row.clear();
+                    let mut found = 0;
                     let own = rows.contains(&i);
                     if own || (!whole && outside[i] == Outside::Reaches) {
-                        let before = one_sided.len();
+                        let before = sided;
                         for (level, tested) in levels.iter().zip(&mut candidates) {
+                            let start = found;
                             *tested += level.query(
                                 i,
                                 positions[i],
                                 radius[i],
                                 criterion,
-                                &mut row,
-                                &mut one_sided,
+                                (&mut row, &mut found),
+                                (&mut one_sided, &mut sided),
                             );
+                            if C::RADIUS_IS_EXACT
+                                && let Some(k) =
+                                    row[start..found].iter().position(|&j| j as usize == i)
+                            {
+                                // i found itself in its own level: not a candidate.
+                                row.copy_within(start + k + 1..found, start + k);
+                                found -= 1;
+                                *tested -= 1;
+                            }
                         }
                         if !whole {
                             // Only the rows searched for are kept.
                             let mut k = before;
-                            for m in before..one_sided.len() {
+                            for m in before..sided {
                                 if rows.contains(&(one_sided[m].0 as usize)) {
                                     one_sided[k] = one_sided[m];
                                     k += 1;
                                 }
                             }
-                            one_sided.truncate(k);
+                            sided = k;
                         }
                     }
-                    if own {
-                        row.sort_unstable();
-                    } else {
-                        row.clear();
-                    }
-                    chunk.push_row(&row);
+                    let row = &mut row[..if own { found } else { 0 }];
+                    row.sort_unstable();
+                    chunk.push_row(row);
                 }
+                one_sided.truncate(sided);
                 Gathered {
                     chunk: chunk.finish(),
                     one_sided,
@@ -345,6 +356,11 @@ fn transpose_one_sided(gathered: Vec<Gathered>, n: usize) -> Vec<Chunk> {
             for k in 0..rows {
                 let i = first + k;
                 let more = &extra[start[i]..start[i + 1]];
+                if more.is_empty() {
+                    // Most rows have nothing to add: their bytes are copied as they are.
+                    merged.push_row_of(&chunk, k);
+                    continue;
+                }
                 // Both ascend and are disjoint (a one-sided pair is not in the row that
                 // missed it): merge them.
                 row.clear();
@@ -504,9 +520,12 @@ impl<V: Vector> Level<V> {
         }
     }
 
-    /// Appends to `out` the neighbours j of particle i in this level with |r_ij| < r_i,
-    /// and to `one_sided` those with |r_ij| ≥ r_j as (j, i); returns the candidates
-    /// tested.
+    /// Writes the neighbours j of particle i in this level with |r_ij| < r_i into `out`
+    /// = (buffer, count), after the `count` entries there (growing the buffer when it
+    /// lacks room), and appends to `one_sided` those with |r_ij| ≥ r_j as (j, i); returns
+    /// the candidates tested (`one_sided` too is a buffer and a count). With an
+    /// exact-radius criterion i itself is among them (at
+    /// distance 0) when it is in this level: the caller takes it out.
     #[inline]
     fn query<C: PairCriterion<V>>(
         &self,
@@ -514,9 +533,10 @@ impl<V: Vector> Level<V> {
         xi: V,
         ri: f64,
         crit: &C,
-        out: &mut Vec<u32>,
-        one_sided: &mut Vec<(u32, u32)>,
+        out: (&mut Vec<u32>, &mut usize),
+        one_sided: (&mut Vec<(u32, u32)>, &mut usize),
     ) -> u64 {
+        let (buffer, count) = out;
         let mut lo = [0i64; 3];
         let mut hi = [0i64; 3];
         for k in 0..V::DIM {
@@ -531,31 +551,63 @@ impl<V: Vector> Level<V> {
             hi[k] = b as i64;
         }
         let r2 = ri * ri;
-        // Counted a row of cells at a time, off the inner loop; i itself is not a
-        // candidate.
+        // Counted a row of cells at a time, off the inner loop.
         let mut tested = 0u64;
         for z in lo[2]..=hi[2] {
             for y in lo[1]..=hi[1] {
                 let slots = self.row(z, y, lo[0], hi[0]);
                 tested += slots.len() as u64;
-                for s in slots {
-                    let j = self.index[s];
-                    if j as usize == i {
-                        tested -= 1;
-                        continue;
-                    }
-                    let d = xi - self.pos[s];
-                    let d2 = d.norm_squared();
-                    // |r| < r_i ≤ max(r_i, r_j) already decides an exact-radius criterion.
-                    if d2 < r2 && (C::RADIUS_IS_EXACT || crit.accepts(i, j as usize, d)) {
-                        out.push(j);
-                        // j's gather tests the same d² (negation is exact) against r_j².
-                        let rj = self.rad[s];
-                        if d2 >= rj * rj {
-                            one_sided.push((j, i as u32));
+                if buffer.len() < *count + slots.len() {
+                    buffer.resize(*count + slots.len() + 256, 0);
+                }
+                let index = &self.index[slots.clone()];
+                let pos = &self.pos[slots.clone()];
+                let rad = &self.rad[slots];
+                if !C::RADIUS_IS_EXACT {
+                    for ((&j, &xj), &rj) in index.iter().zip(pos).zip(rad) {
+                        if j as usize == i {
+                            tested -= 1;
+                            continue;
+                        }
+                        let d = xi - xj;
+                        let d2 = d.norm_squared();
+                        if d2 < r2 && crit.accepts(i, j as usize, d) {
+                            buffer[*count] = j;
+                            *count += 1;
+                            // j's gather tests the same d² (negation is exact) against r_j².
+                            if d2 >= rj * rj {
+                                let (pairs, sided) = (&mut *one_sided.0, &mut *one_sided.1);
+                                pairs.truncate(*sided);
+                                pairs.push((j, i as u32));
+                                *sided += 1;
+                            }
                         }
                     }
+                    continue;
                 }
+                // An exact-radius criterion: |r| < r_i ≤ max(r_i, r_j) decides. Each
+                // candidate is written at the row's next free place, which moves on only
+                // if it is accepted: about four in five fail, in no order a branch
+                // predictor learns, and a branch per candidate cost more than the test.
+                let (pairs, sided) = (&mut *one_sided.0, &mut *one_sided.1);
+                if pairs.len() < *sided + index.len() {
+                    pairs.resize(*sided + index.len() + 256, (0, 0));
+                }
+                let room = &mut buffer[*count..*count + index.len()];
+                let other_room = &mut pairs[*sided..*sided + index.len()];
+                let (mut next, mut other) = (0, 0);
+                for ((&j, &xj), &rj) in index.iter().zip(pos).zip(rad) {
+                    let d2 = (xi - xj).norm_squared();
+                    let accept = usize::from(d2 < r2);
+                    room[next] = j;
+                    next += accept;
+                    // j's gather tests the same d² (negation is exact) against r_j²
+                    // (never i itself: 0 < r_i²); the same write without a branch.
+                    other_room[other] = (j, i as u32);
+                    other += accept & usize::from(d2 >= rj * rj);
+                }
+                *count += next;
+                *sided += other;
             }
         }
         tested

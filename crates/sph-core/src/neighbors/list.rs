@@ -87,6 +87,18 @@ impl Chunk {
         self.offsets.push(end);
     }
 
+    /// Appends row `k` of `other` (a chunk of the same rows) as it is encoded there: a
+    /// row's bytes depend only on its entries and its own index.
+    pub(crate) fn push_row_of(&mut self, other: &Chunk, k: usize) {
+        debug_assert_eq!(self.first_row + self.rows(), other.first_row + k);
+        let (a, b) = (other.offsets[k] as usize, other.offsets[k + 1] as usize);
+        self.bytes.extend_from_slice(&other.bytes[a..b]);
+        self.pairs += other.row(k).len();
+        let end = u32::try_from(self.bytes.len())
+            .expect("a chunk of 256 rows holds fewer than 2^32 bytes of neighbour indices");
+        self.offsets.push(end);
+    }
+
     /// The chunk trimmed to its length (the bytes grew by doubling).
     pub(crate) fn finish(mut self) -> Self {
         self.offsets.shrink_to_fit();

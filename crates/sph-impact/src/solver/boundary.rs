@@ -90,6 +90,18 @@ impl<D: Dimension> Boundary<D> {
         }
     }
 
+    /// How far a displacement `d` moves a point towards or away from the boundary: |d · n|
+    /// for a wall's normal n, |d_axis| for a periodic pair of faces. A particle's distance
+    /// to the boundary, which decides its ghosts, changes by no more (a Verlet list's
+    /// holding test, solver/simulation/verlet.rs).
+    #[inline]
+    pub(crate) fn normal_part(&self, d: D::Vector) -> f64 {
+        match *self {
+            Boundary::Wall { normal, .. } | Boundary::Contact { normal, .. } => d.dot(normal).abs(),
+            Boundary::Periodic { axis, .. } => d.component(axis).abs(),
+        }
+    }
+
     /// True for a boundary that pushes but cannot pull ([`Boundary::Contact`]).
     #[inline]
     pub fn is_unilateral(&self) -> bool {

@@ -169,9 +169,10 @@ pub enum NeighbourSearch {
     /// A Verlet list: the pairs within (1 + s) times the supports, s the skin
     /// ([`SchemeConfig::neighbour_skin`]), and the ghosts of the particles within that
     /// reach of a boundary, kept over both stages and over as many steps as the list
-    /// still holds every pair: until, for some particle i, h_i + |Δx_i| + max_j |Δx_j|
-    /// exceeds its reach (1 + s) h_i at the build (Δx the displacement since, h_i its
-    /// present support). The pair passes skip a listed pair beyond both present supports,
+    /// still holds every pair: until, for some particle i, h_i + max_j |Δx_i − Δx_j| over
+    /// its present neighbours exceeds its reach (1 + s) h_i at the build (Δx the
+    /// displacement since, h_i its present support), or a ghost a placement would make
+    /// now was not placed then (solver/simulation/verlet.rs). The pair passes skip a listed pair beyond both present supports,
     /// and a ghost that a placement from the present positions would not make, by the
     /// search's own test, so every stage sees the pairs a search of its own would find,
     /// in the same order: the results are those of [`Self::EachStage`] to the bit, at

@@ -738,7 +738,9 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
         let skin = self.scheme.skin()?;
         let kept = self.kept.take()?;
         let build = kept.skin.as_ref()?;
-        build.holds(skin, state, &self.boundaries).then_some(kept)
+        build
+            .holds(skin, state, &self.boundaries, kept.ghosts())
+            .then_some(kept)
     }
 
     /// Puts the step's start state back (an error before the update) and passes the

@@ -707,7 +707,7 @@ impl<D: Dimension> Extended<'_, D> {
 /// boundary over the particles and the ghosts made before it, in the order of
 /// [`Ghosts::Place`], with every ghost some support up to the reach can make
 /// (`Boundary::ghosts_within`).
-fn skin_plan<D: Dimension>(
+pub(crate) fn skin_plan<D: Dimension>(
     position: &[D::Vector],
     reach: &[f64],
     boundaries: &[Boundary<D>],

@@ -33,6 +33,13 @@ pub(super) struct Topology<D: Dimension> {
     pub(super) skin: Option<SkinBuild<D>>,
 }
 
+impl<D: Dimension> Topology<D> {
+    /// The ghosts the list's indices count, as placed at its search.
+    pub(super) fn ghosts(&self) -> &[PlacedGhost<D>] {
+        &self.ghosts
+    }
+}
+
 impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
     /// Pass 1 (when `options` asks for it) and pass 2 with the pair kernel `pk`, their
     /// blocks of rows shared out among `ranks` as `shares` gives them (solver/ranks.rs),
