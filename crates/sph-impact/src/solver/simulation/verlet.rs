@@ -79,13 +79,15 @@ impl<D: Dimension> SkinBuild<D> {
         if skin != self.skin || boundaries != self.boundaries.as_slice() || p.id != self.ids {
             return false;
         }
-        let moved: Vec<D::Vector> = p
-            .position
-            .par_iter()
-            .zip(&self.position)
-            .map(|(&x, &x0)| x - x0)
-            .collect();
-        let distance: Vec<f64> = moved.par_iter().map(|d| d.norm()).collect();
+        // The displacements' lengths at every stage; the vectors only for the sharper
+        // test, when the first bound fails.
+        let displacement = || {
+            p.position
+                .par_iter()
+                .zip(&self.position)
+                .map(|(&x, &x0)| x - x0)
+        };
+        let distance: Vec<f64> = displacement().map(|d| d.norm()).collect();
         // The largest displacement; a NaN one stops the list (the next search reports it).
         let largest = distance
             .iter()
@@ -95,13 +97,14 @@ impl<D: Dimension> SkinBuild<D> {
         }
         let h = &p.smoothing_length;
         let fits = |k: usize, spread: f64| (h[k] + spread) * (1.0 + MARGIN) <= self.reach[k];
-        if (0..moved.len())
+        if (0..distance.len())
             .into_par_iter()
             .all(|i| fits(i, distance[i] + largest))
         {
             return true;
         }
-        Moved::new(state, &self.reach, moved, plan).holds(largest, boundaries)
+        drop(distance);
+        Moved::new(state, &self.reach, displacement().collect(), plan).holds(largest, boundaries)
     }
 }
 
