@@ -82,7 +82,7 @@ fn measure<D: sph_core::Dimension>(sim: &mut Simulation<D, KernelChoice>, case: 
         particles: n,
         rate: (n * case.steps) as f64 / wall,
         phases: format!(
-            "neighbours {:.0} %, pair set-up {:.0} %, EOS {:.0} %, gradients {:.0} %, pair loop {:.0} %, integration {:.0} %; {} searches",
+            "neighbours {:.1} %, pair set-up {:.1} %, EOS {:.1} %, gradients {:.1} %, pair loop {:.1} %, integration {:.1} %; {} searches",
             share(t.neighbours),
             share(t.setup),
             share(t.eos),

@@ -111,6 +111,11 @@ impl Chunk {
         self.first_row
     }
 
+    /// Neighbour indices held (the sum of the rows' lengths).
+    pub(crate) fn pairs(&self) -> usize {
+        self.pairs
+    }
+
     /// Rows held.
     pub(crate) fn rows(&self) -> usize {
         self.offsets.len() - 1
@@ -140,6 +145,108 @@ pub struct Neighbors<'a> {
     prev: i64,
     left: usize,
     first: bool,
+}
+
+impl Neighbors<'_> {
+    /// Decodes the next `out.len()` neighbours into `out`, which must be at most as many
+    /// as are left: the row's state held in registers for the whole group, where a
+    /// caller that stores each index next to the iterator would have it reloaded.
+    #[inline]
+    pub(crate) fn fill(&mut self, out: &mut [u32]) {
+        debug_assert!(out.len() <= self.left);
+        let (bytes, mut pos, mut prev) = (self.bytes, self.pos, self.prev);
+        let mut from = 0;
+        if self.first
+            && let Some(slot) = out.first_mut()
+        {
+            let code = get_varint(bytes, &mut pos);
+            prev += (code >> 1) as i64 ^ -((code & 1) as i64);
+            *slot = prev as u32;
+            from = 1;
+            self.first = false;
+        }
+        let mut rest = &mut out[from..];
+        while !rest.is_empty() {
+            // Eight one-byte gaps at once where the next eight bytes are all one-byte
+            // codes (most gaps are below 128): no branch per byte.
+            if rest.len() >= 8
+                && let Some(word) = bytes.get(pos..pos + 8)
+            {
+                let w = u64::from_le_bytes(word.try_into().expect("eight bytes"));
+                if w & 0x8080_8080_8080_8080 == 0 {
+                    let (group, tail) = rest.split_at_mut(8);
+                    for (k, slot) in group.iter_mut().enumerate() {
+                        prev += ((w >> (8 * k)) & 0x7f) as i64 + 1;
+                        *slot = prev as u32;
+                    }
+                    pos += 8;
+                    rest = tail;
+                    continue;
+                }
+            }
+            let (slot, tail) = rest.split_first_mut().expect("not empty");
+            prev += get_varint(bytes, &mut pos) as i64 + 1;
+            *slot = prev as u32;
+            rest = tail;
+        }
+        self.pos = pos;
+        self.prev = prev;
+        self.left -= out.len();
+    }
+}
+
+impl Neighbors<'_> {
+    /// Decodes the next `take` neighbours (at most 64, and at most as many as are left)
+    /// and keeps those whose bit of `selected` is set (bit k for the k-th), at the start
+    /// of `out` in order; returns how many were kept. Each is written at the next free
+    /// place, which moves on only if it is kept, so there is no branch per neighbour;
+    /// eight one-byte gaps are decoded at once as in [`Self::fill`].
+    #[inline]
+    pub(crate) fn fill_selected(
+        &mut self,
+        take: usize,
+        selected: u64,
+        out: &mut [u32; 64],
+    ) -> usize {
+        debug_assert!(take <= 64 && take <= self.left);
+        let (bytes, mut pos, mut prev) = (self.bytes, self.pos, self.prev);
+        let (mut k, mut n) = (0, 0);
+        if self.first && take > 0 {
+            let code = get_varint(bytes, &mut pos);
+            prev += (code >> 1) as i64 ^ -((code & 1) as i64);
+            out[0] = prev as u32;
+            n = (selected & 1) as usize;
+            k = 1;
+            self.first = false;
+        }
+        while k < take {
+            if take - k >= 8
+                && let Some(word) = bytes.get(pos..pos + 8)
+            {
+                let w = u64::from_le_bytes(word.try_into().expect("eight bytes"));
+                if w & 0x8080_8080_8080_8080 == 0 {
+                    let bits = selected >> k;
+                    for b in 0..8 {
+                        prev += ((w >> (8 * b)) & 0x7f) as i64 + 1;
+                        // n ≤ k + b < 64 here: the mask only spares a bounds test.
+                        out[n % 64] = prev as u32;
+                        n += ((bits >> b) & 1) as usize;
+                    }
+                    pos += 8;
+                    k += 8;
+                    continue;
+                }
+            }
+            prev += get_varint(bytes, &mut pos) as i64 + 1;
+            out[n % 64] = prev as u32;
+            n += ((selected >> k) & 1) as usize;
+            k += 1;
+        }
+        self.pos = pos;
+        self.prev = prev;
+        self.left -= take;
+        n
+    }
 }
 
 impl Iterator for Neighbors<'_> {
@@ -214,45 +321,9 @@ impl NeighborList {
         Self { chunks, len }
     }
 
-    /// The pairs of this list that `keep(i, j)` accepts, each row in its order: one pass
-    /// over the rows, in parallel by chunks. `keep` is called for every listed pair and
-    /// its answer added, not branched on, so a test that fails in no pattern (a Verlet
-    /// list's skin, sph-impact) costs no mispredicted branch.
-    pub fn retain_pairs<F>(&self, keep: F) -> NeighborList
-    where
-        F: Fn(usize, u32) -> bool + Sync,
-    {
-        use rayon::prelude::*;
-        let chunks = self
-            .chunks
-            .par_iter()
-            .map(|c| {
-                let mut out = Chunk::with_rows(c.first_row, c.rows());
-                out.bytes.reserve(c.bytes.len());
-                let mut row = Vec::new();
-                for k in 0..c.rows() {
-                    let i = c.first_row + k;
-                    let listed = c.row(k);
-                    if row.len() < listed.len() {
-                        row.resize(listed.len(), 0);
-                    }
-                    // Each listed j is written at the next free place, which moves on
-                    // only if j is kept: no branch on the test.
-                    let slots = &mut row[..listed.len()];
-                    let mut n = 0;
-                    for j in listed {
-                        slots[n] = j;
-                        n += usize::from(keep(i, j));
-                    }
-                    out.push_row(&slots[..n]);
-                }
-                out.finish()
-            })
-            .collect();
-        Self {
-            chunks,
-            len: self.len,
-        }
+    /// The chunks of rows.
+    pub(crate) fn chunks(&self) -> &[Chunk] {
+        &self.chunks
     }
 
     /// Number of particles.
@@ -305,31 +376,6 @@ impl NeighborList {
 mod tests {
     use super::*;
 
-    /// `retain_pairs` keeps exactly the accepted pairs of each row, in order, across
-    /// chunks, and an empty row stays a row.
-    #[test]
-    fn retained_pairs_are_the_accepted_ones_in_order() {
-        let n = 2 * CHUNK + 3;
-        let rows: Vec<Vec<u32>> = (0..n)
-            .map(|i| {
-                (0..n as u32)
-                    .filter(|&j| j as usize != i && (j as usize + i) % 7 < 3)
-                    .collect()
-            })
-            .collect();
-        let list = NeighborList::from_rows(rows.clone());
-        let keep = |i: usize, j: u32| !(i * 31 + j as usize * 17).is_multiple_of(5);
-        let kept = list.retain_pairs(keep);
-        assert_eq!(kept.len(), n);
-        for (i, row) in rows.iter().enumerate() {
-            let want: Vec<u32> = row.iter().copied().filter(|&j| keep(i, j)).collect();
-            assert_eq!(kept.neighbors(i).collect::<Vec<_>>(), want, "row {i}");
-        }
-        assert!(kept.total_pairs() < list.total_pairs());
-        assert_eq!(list.retain_pairs(|_, _| true), list);
-        assert_eq!(list.retain_pairs(|_, _| false).total_pairs(), 0);
-    }
-
     #[test]
     fn rows_across_chunk_boundaries_read_back() {
         let n = 2 * CHUNK + 7;
@@ -381,6 +427,59 @@ mod tests {
                 proptest::prop_assert_eq!(&list.neighbors(i).collect::<Vec<_>>(), r);
                 proptest::prop_assert_eq!(list.count(i), r.len());
             }
+        }
+
+        /// Decoding in groups (`Neighbors::fill`), then by `next`, reads the same row.
+        #[test]
+        fn groups_decode_the_row(
+            set in proptest::collection::btree_set(proptest::prelude::any::<u32>(), 0..100),
+            i in 0usize..300,
+            group in 1usize..20,
+        ) {
+            let row: Vec<u32> = set.into_iter().filter(|&j| j as usize != i).collect();
+            let mut rows = vec![Vec::new(); i];
+            rows.push(row.clone());
+            let list = NeighborList::from_rows(rows);
+            let mut it = list.neighbors(i);
+            let mut read = Vec::new();
+            while it.len() >= group {
+                let mut buf = vec![0; group];
+                it.fill(&mut buf);
+                read.extend(buf);
+            }
+            read.extend(it);
+            proptest::prop_assert_eq!(read, row);
+        }
+
+        /// Decoding in groups of up to 64 keeping the selected ones
+        /// (`Neighbors::fill_selected`) reads the selected neighbours of the row.
+        #[test]
+        fn selected_groups_decode_the_selected(
+            set in proptest::collection::btree_set(0u32..3_000, 0..200),
+            i in 0usize..300,
+            group in 1usize..=64,
+            seed in proptest::prelude::any::<u64>(),
+        ) {
+            let row: Vec<u32> = set.into_iter().filter(|&j| j as usize != i).collect();
+            let mut rows = vec![Vec::new(); i];
+            rows.push(row.clone());
+            let list = NeighborList::from_rows(rows);
+            let keep = |k: usize| (seed.rotate_left(k as u32 % 64) ^ k as u64) & 1 == 1;
+            let mut it = list.neighbors(i);
+            let (mut read, mut out, mut k0) = (Vec::new(), [0u32; 64], 0);
+            loop {
+                let take = it.len().min(group);
+                if take == 0 {
+                    break;
+                }
+                let m = (0..take).fold(0u64, |m, k| m | (u64::from(keep(k0 + k)) << k));
+                let n = it.fill_selected(take, m, &mut out);
+                read.extend_from_slice(&out[..n]);
+                k0 += take;
+            }
+            let want: Vec<u32> =
+                row.iter().enumerate().filter(|&(k, _)| keep(k)).map(|(_, &j)| j).collect();
+            proptest::prop_assert_eq!(read, want);
         }
     }
 

@@ -10,6 +10,8 @@
 //!   each search a volume sized for them.
 //! * [`NeighborList`]: the result in compressed sparse rows (CSR), each row sorted by
 //!   index, self excluded. Built in parallel with rayon, identical for any thread count.
+//! * [`PairSelection`]: a subset of a list's pairs, one bit per listed pair (a Verlet
+//!   list's pairs of one stage), read with the list through [`Pairs`].
 //! * [`brute_force_neighbors`]: the O(N²) reference used by the tests.
 //! * [`halo`]: which particles outside a domain of rows can pair with one inside it, from
 //!   the domain's block [`Region`]s: the ghost layer of a rank in a distributed run.
@@ -18,11 +20,13 @@ mod criterion;
 mod grid;
 mod halo;
 mod list;
+mod selection;
 
 pub use criterion::{PairCriterion, ScalarSupport, TensorSupport};
 pub use grid::{CellList, DEFAULT_CELL_FRACTION, DEFAULT_MAX_LEVELS, LevelStats};
 pub use halo::{Region, halo, regions_of_rows};
 pub use list::{NeighborList, Neighbors};
+pub use selection::{PairSelection, Pairs};
 
 use crate::error::CoreError;
 use crate::vector::Vector;

@@ -26,12 +26,12 @@ use crate::solver::pair_kernel::{
 };
 use crate::solver::pair_rules::{NoPairRule, PairRule};
 use crate::solver::ranks::{self, OneRank, Ranks};
-use crate::solver::state::{Extended, Ghosts, PlacedGhost, State};
+use crate::solver::state::{Extended, Ghosts, PlacedGhost, RealColumns, State};
 use crate::solver::timestep::{TimestepVote, acceleration_vote, cfl_vote, density_vote};
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 use sph_core::{
-    CellList, Dimension, NeighborList, Particles, Permutation, ScalarSupport, Tensor,
+    CellList, Dimension, NeighborList, Pairs, Particles, Permutation, ScalarSupport, Tensor,
     TensorSupport, Vector,
 };
 use sph_damage::DamageForm;

@@ -267,13 +267,79 @@ pub(crate) struct PairProbe<D: Dimension>(Vec<(D::Vector, f64)>);
 
 impl<D: Dimension> PairProbe<D> {
     /// Whether the pair (i, j) interacts. Without branches, for
-    /// `NeighborList::retain_pairs`: about a sixth of a Verlet row fails, in no order a
+    /// `NeighborList::select_pairs`: about a sixth of a Verlet row fails, in no order a
     /// branch predictor could learn.
     #[inline(always)]
     pub fn interacts(&self, i: usize, j: usize) -> bool {
         let ((xi, hi), (xj, hj)) = (self.0[i], self.0[j]);
         let s = hi.max(hj);
         Vector::norm_squared(xi - xj) < s * s
+    }
+}
+
+/// The real particles' columns that an [`Extended`] state takes over for a stage: x, v,
+/// m, ρ and h, to which the ghosts are appended, given back to the particles (the ghosts
+/// cut off) when the pair passes end ([`Extended::release_pair_columns`]). So no second
+/// copy of them is alive at the stage's memory peak, pass 2 (72 bytes per particle in
+/// 3-D). While they are lent the particles' own columns are empty.
+#[derive(Debug, Default)]
+pub(crate) struct RealColumns<D: Dimension> {
+    position: Vec<D::Vector>,
+    velocity: Vec<D::Vector>,
+    mass: Vec<f64>,
+    density: Vec<f64>,
+    h: Vec<f64>,
+}
+
+impl<D: Dimension> RealColumns<D> {
+    /// Takes the columns out of `p`, leaving them empty there.
+    pub fn take(p: &mut Particles<D>) -> Self {
+        use std::mem::take;
+        RealColumns {
+            position: take(&mut p.position),
+            velocity: take(&mut p.velocity),
+            mass: take(&mut p.mass),
+            density: take(&mut p.density),
+            h: take(&mut p.smoothing_length),
+        }
+    }
+
+    /// Gives the columns back to `p`, the first `n` entries of each (the real
+    /// particles'; the ghosts' are cut off, their room kept for the next stage). A
+    /// density that `p` was given meanwhile (a summation density) is kept: it equals
+    /// the columns' own.
+    pub fn put_back(self, p: &mut Particles<D>, n: usize) {
+        let RealColumns {
+            mut position,
+            mut velocity,
+            mut mass,
+            mut density,
+            mut h,
+        } = self;
+        for len in [
+            position.len(),
+            velocity.len(),
+            mass.len(),
+            density.len(),
+            h.len(),
+        ] {
+            debug_assert!(
+                len >= n,
+                "a column lent for a stage holds every real particle"
+            );
+        }
+        position.truncate(n);
+        velocity.truncate(n);
+        mass.truncate(n);
+        density.truncate(n);
+        h.truncate(n);
+        p.position = position;
+        p.velocity = velocity;
+        p.mass = mass;
+        if p.density.is_empty() {
+            p.density = density;
+        }
+        p.smoothing_length = h;
     }
 }
 
@@ -424,8 +490,10 @@ impl<'a, D: Dimension> Extended<'a, D> {
     /// Frees the columns only the pair passes read, keeping those the stage reads after
     /// them (the pressures, the damage and its tensor, the placed ghosts): the damage
     /// rates that follow the passes then allocate theirs without the passes' columns
-    /// alive (the stage's memory peak).
-    pub fn release_pair_columns(&mut self) {
+    /// alive (the stage's memory peak). Returns the real particles' columns it took
+    /// over ([`RealColumns`]), to be given back to them.
+    #[must_use = "the real particles' columns go back to them"]
+    pub fn release_pair_columns(&mut self) -> RealColumns<D> {
         let Extended {
             n_real: _,
             position,
@@ -458,12 +526,14 @@ impl<'a, D: Dimension> Extended<'a, D> {
             live,
             skin: _,
         } = self;
-        *position = Vec::new();
-        *velocity = Vec::new();
-        *mass = Vec::new();
-        *density = Vec::new();
+        let columns = RealColumns {
+            position: std::mem::take(position),
+            velocity: std::mem::take(velocity),
+            mass: std::mem::take(mass),
+            density: std::mem::take(density),
+            h: std::mem::take(h),
+        };
         *sound_speed = Vec::new();
-        *h = Vec::new();
         *h_tensor = Vec::new();
         *spacing0 = Vec::new();
         *material = Vec::new();
@@ -480,6 +550,7 @@ impl<'a, D: Dimension> Extended<'a, D> {
         *radius = Vec::new();
         *smoothed_radius = Vec::new();
         *live = Vec::new();
+        columns
     }
 
     /// The test of a Verlet list's pairs at this stage ([`Self::skin`]; [`PairProbe`]).
@@ -519,14 +590,17 @@ impl<'a, D: Dimension> Extended<'a, D> {
         }
     }
 
-    /// Copies the real particles and appends the ghosts of every boundary, each
+    /// The real particles of `state` with `columns` (their x, v, m, ρ and h, taken
+    /// from them: [`RealColumns`]), and the ghosts of every boundary appended, each
     /// boundary seeing the real particles and the ghosts made before it (so corners
     /// of two periodic axes are filled).
     /// `pressure` is the damaged pressure P_D and `damage` the damage D of each real
-    /// particle (empty without damage); the stress is stored as (1 − D) S. The three
-    /// per-particle arrays are taken over (the ghosts are appended to them), not copied.
+    /// particle (empty without damage); the stress is stored as (1 − D) S. The
+    /// per-particle arrays given are taken over (the ghosts are appended to them), not
+    /// copied.
     pub fn build(
         state: &State<D>,
+        columns: RealColumns<D>,
         stress: &'a [sph_core::glam::DMat3],
         pressure: Vec<f64>,
         sound_speed: Vec<f64>,
@@ -536,16 +610,23 @@ impl<'a, D: Dimension> Extended<'a, D> {
         ghosts: Ghosts<'_, D>,
     ) -> Self {
         let p = &state.particles;
-        let n = p.len();
+        let RealColumns {
+            position,
+            velocity,
+            mass,
+            density,
+            h,
+        } = columns;
+        let n = position.len();
         let mut ext = Extended {
             n_real: n,
-            position: p.position.clone(),
-            velocity: p.velocity.clone(),
-            mass: p.mass.clone(),
-            density: p.density.clone(),
+            position,
+            velocity,
+            mass,
+            density,
             pressure,
             sound_speed,
-            h: p.smoothing_length.clone(),
+            h,
             h_tensor: state.h_tensor.clone(),
             spacing0: state.spacing0.clone(),
             material: p.material.clone(),
@@ -576,6 +657,7 @@ impl<'a, D: Dimension> Extended<'a, D> {
                 for (index, b) in boundaries.iter().enumerate() {
                     made.clear();
                     b.ghosts(&ext.position, &radius, &mut made);
+                    ext.reserve_ghosts(made.len(), &mut radius);
                     for g in &made {
                         let placed = PlacedGhost {
                             ghost: *g,
@@ -590,6 +672,7 @@ impl<'a, D: Dimension> Extended<'a, D> {
                 }
             }
             Ghosts::Replay(plan) => {
+                ext.reserve_ghosts(plan.len(), &mut radius);
                 for p in plan {
                     let placed = PlacedGhost {
                         ghost: p.ghost.moved_to(ext.position[p.ghost.source]),
@@ -618,6 +701,8 @@ impl<'a, D: Dimension> Extended<'a, D> {
     ) {
         self.skin = true;
         self.live = vec![true; self.n_real];
+        self.reserve_ghosts(plan.len(), radius);
+        self.live.reserve_exact(plan.len());
         for p in plan {
             let s = p.ghost.source;
             let x = self.position[s];
@@ -634,6 +719,34 @@ impl<'a, D: Dimension> Extended<'a, D> {
             self.push_ghost(&placed, radius);
             self.placed.push(placed);
         }
+    }
+
+    /// Room for `extra` more ghosts in the columns [`Self::push_ghost`] appends to,
+    /// exactly: the real particles' columns go back to them with this room
+    /// ([`RealColumns`]), and a column that grew by doubling would keep twice their size.
+    fn reserve_ghosts(&mut self, extra: usize, radius: &mut Vec<f64>) {
+        self.position.reserve_exact(extra);
+        self.velocity.reserve_exact(extra);
+        self.mass.reserve_exact(extra);
+        self.density.reserve_exact(extra);
+        self.pressure.reserve_exact(extra);
+        self.sound_speed.reserve_exact(extra);
+        self.h.reserve_exact(extra);
+        if !self.h_tensor.is_empty() {
+            self.h_tensor.reserve_exact(extra);
+        }
+        self.spacing0.reserve_exact(extra);
+        self.material.reserve_exact(extra);
+        self.source.reserve_exact(extra);
+        self.ghost_map.reserve_exact(extra);
+        self.ghost_unilateral.reserve_exact(extra);
+        if self.has_stress() {
+            self.ghost_stress.reserve_exact(extra);
+        }
+        if !self.damage.is_empty() {
+            self.damage.reserve_exact(extra);
+        }
+        radius.reserve_exact(extra);
     }
 
     /// Appends one ghost, its fields copied from its source (`radius` is the support of

@@ -130,7 +130,7 @@ impl<D: Dimension> PairGradients<D> {
 /// the study's.
 pub(crate) fn gradients<D: Dimension, P: PairKernel<D>>(
     ext: &Extended<'_, D>,
-    list: &NeighborList,
+    list: Pairs<'_>,
     pk: &P,
     options: GradientOptions,
     (rows, blocks): (usize, Range<usize>),
@@ -148,7 +148,7 @@ pub(crate) fn gradients<D: Dimension, P: PairKernel<D>>(
 /// time.
 fn gradients_in<D: Dimension, P: PairKernel<D>, const RZ: bool, const STUDY: bool>(
     ext: &Extended<'_, D>,
-    list: &NeighborList,
+    list: Pairs<'_>,
     pk: &P,
     options: GradientOptions,
     rows: usize,
@@ -296,8 +296,9 @@ fn gradients_in<D: Dimension, P: PairKernel<D>, const RZ: bool, const STUDY: boo
                 energy,
             },
         );
+        let mut scratch = Vec::new();
         for i in start..end {
-            for j in list.neighbors(i) {
+            for &j in list.row(i, &mut scratch) {
                 let j = j as usize;
                 match pair_blocks::visit(i, j, start, end) {
                     pair_blocks::Visit::Done => {}

@@ -29,7 +29,7 @@ use crate::solver::pair_rules::{self, DiffusionPair, Side, ViscosityPair, decoup
 use crate::solver::ranks::{Flat, get_tensor, get_vector, put_tensor, put_vector};
 use crate::solver::state::Extended;
 use rayon::prelude::*;
-use sph_core::{Dimension, NeighborList, Tensor, Vector};
+use sph_core::{Dimension, Pairs, Tensor, Vector};
 use sph_riemann::{PairInterface, SideState, interface_velocity, reconstruct};
 use std::ops::Range;
 

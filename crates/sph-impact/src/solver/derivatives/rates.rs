@@ -161,7 +161,7 @@ pub(crate) struct PairRates<D: Dimension> {
 /// choices runs even where the scheme is the study's (pair_scheme.rs).
 pub(crate) fn rates<D: Dimension, P: PairKernel<D>>(
     ext: &Extended<'_, D>,
-    list: &NeighborList,
+    list: Pairs<'_>,
     pk: &P,
     grads: Option<&GradientSet<D>>,
     (scheme, generic): (&SchemeConfig, bool),
@@ -182,7 +182,7 @@ pub(crate) fn rates<D: Dimension, P: PairKernel<D>>(
 /// scheme ([`PairScheme::study`]), fixed at compile time.
 fn rates_in<D: Dimension, P: PairKernel<D>, const RZ: bool, const STUDY: bool>(
     ext: &Extended<'_, D>,
-    list: &NeighborList,
+    list: Pairs<'_>,
     pk: &P,
     grads: Option<&GradientSet<D>>,
     scheme: &SchemeConfig,
@@ -664,13 +664,14 @@ fn rates_in<D: Dimension, P: PairKernel<D>, const RZ: bool, const STUDY: bool>(
                 energy: false,
             },
         );
+        let mut scratch = Vec::new();
         for i in start..end {
             let a = row(i);
             let k = i - start;
             // i's sums over the ghosts of contact walls, decided on below.
             let (mut wall, mut wall_normal) = (PairPart::<D>::ZERO, D::Vector::ZERO);
             let mut dv_boundary = D::Vector::ZERO;
-            for j in list.neighbors(i) {
+            for &j in list.row(i, &mut scratch) {
                 let j = j as usize;
                 let both = match pair_blocks::visit(i, j, start, end) {
                     pair_blocks::Visit::Done => continue,

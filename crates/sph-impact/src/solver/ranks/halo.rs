@@ -9,21 +9,17 @@
 //! reads, with the same bits, so the run stays bit-identical on any number of ranks.
 
 use super::{Flat, Ranks};
-use sph_core::NeighborList;
+use sph_core::Pairs;
 use std::ops::Range;
 
 /// The real particles (of `n`) whose pass-1 values the pairs of the rows `own` read,
 /// besides `own` itself: the source of every neighbour `list` gives those rows (a real
 /// particle is its own source, a boundary ghost's is the particle it images), ascending.
-pub(crate) fn rows_read(
-    list: &NeighborList,
-    source: &[u32],
-    own: Range<usize>,
-    n: usize,
-) -> Vec<u32> {
+pub(crate) fn rows_read(list: Pairs<'_>, source: &[u32], own: Range<usize>, n: usize) -> Vec<u32> {
     let mut read = vec![false; n];
+    let mut scratch = Vec::new();
     for i in own.clone() {
-        for j in list.neighbors(i) {
+        for &j in list.row(i, &mut scratch) {
             read[source[j as usize] as usize] = true;
         }
     }
@@ -116,6 +112,7 @@ impl Halo {
 mod tests {
     use super::super::OneRank;
     use super::*;
+    use sph_core::NeighborList;
 
     #[test]
     fn the_rows_read_are_the_sources_of_the_listed_neighbours_outside_the_rows() {
@@ -130,8 +127,11 @@ mod tests {
             vec![4],
         ]);
         let source = [0, 1, 2, 3, 4, 5, 5, 0];
-        assert_eq!(rows_read(&list, &source, 2..4, 6), [0, 1, 4, 5]);
-        assert_eq!(rows_read(&list, &source, 0..6, 6), [] as [u32; 0]);
+        assert_eq!(rows_read(Pairs::all(&list), &source, 2..4, 6), [0, 1, 4, 5]);
+        assert_eq!(
+            rows_read(Pairs::all(&list), &source, 0..6, 6),
+            [] as [u32; 0]
+        );
     }
 
     #[test]

@@ -36,7 +36,9 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
     /// `damage` is then empty); `None` computes it from the damage state.
     pub(super) fn particle_terms(&self, state: &State<D>, damage: Option<&[f64]>) -> ParticleTerms {
         let p = &state.particles;
-        let n = p.len();
+        // Counted by the materials: with a summation density this runs while the
+        // positions are lent to the stage's extended state (state.rs, `RealColumns`).
+        let n = p.material.len();
         let n_chunks = n.div_ceil(PASS_CHUNK);
         let has_damage = !state.damage_state.is_empty();
         let solid = !state.stress.is_empty();

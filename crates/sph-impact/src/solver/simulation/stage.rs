@@ -48,7 +48,7 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
     fn pair_passes<P: PairKernel<D>>(
         &self,
         ext: &Extended<'_, D>,
-        list: &NeighborList,
+        list: Pairs<'_>,
         pk: &P,
         options: Option<GradientOptions>,
         (rows, shares): (usize, &[Range<usize>]),
@@ -217,8 +217,10 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
             (Some(s), None) => verlet::reach(&support, s),
             _ => Vec::new(),
         };
+        let columns = RealColumns::take(&mut state.particles);
         let mut ext = Extended::build(
             state,
+            columns,
             &state.stress,
             pressure_d,
             signal,
@@ -312,6 +314,10 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
         let (list, shares, built) = match reuse {
             Some(t) => (t.list, t.shares, t.skin),
             None => {
+                // A search that fails gives the real particles' columns back first.
+                let give_back = |ext: &mut Extended<'_, D>, particles: &mut Particles<D>| {
+                    ext.release_pair_columns().put_back(particles, n_real);
+                };
                 let shares = self.shares(n_real, rows, size);
                 // On several ranks each searches the rows of its own blocks (and the
                 // particles that reach them), unless the summation density reads every row.
@@ -320,21 +326,28 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
                 } else {
                     0..ext.position.len()
                 };
-                let list = if let Some(s) = skin {
+                let searched = if let Some(s) = skin {
                     // Every pair within the reach (1 + s) h: the ghosts' reach is their
                     // sources', as Ghosts::SkinPlace placed them with.
                     let reach = verlet::reach(&ext.h, s);
-                    let support = ScalarSupport::new(&reach)?;
-                    self.search
-                        .neighbors_of_rows(&ext.position, &support, mine)?
+                    ScalarSupport::new(&reach).and_then(|support| {
+                        self.search.neighbors_of_rows(&ext.position, &support, mine)
+                    })
                 } else if ext.h_tensor.is_empty() {
-                    let support = ScalarSupport::new(&ext.h)?;
-                    self.search
-                        .neighbors_of_rows(&ext.position, &support, mine)?
+                    ScalarSupport::new(&ext.h).and_then(|support| {
+                        self.search.neighbors_of_rows(&ext.position, &support, mine)
+                    })
                 } else {
-                    let support = TensorSupport::new(&ext.h_tensor)?;
-                    self.search
-                        .neighbors_of_rows(&ext.position, &support, mine)?
+                    TensorSupport::new(&ext.h_tensor).and_then(|support| {
+                        self.search.neighbors_of_rows(&ext.position, &support, mine)
+                    })
+                };
+                let list = match searched {
+                    Ok(list) => list,
+                    Err(e) => {
+                        give_back(&mut ext, &mut state.particles);
+                        return Err(e.into());
+                    }
                 };
                 if size > 1 {
                     // Every block's cost, for the next evaluation's shares.
@@ -351,7 +364,14 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
                         .collect();
                 }
                 self.timings.searches += 1;
-                let built = skin.map(|s| SkinBuild::new(s, state, &self.boundaries));
+                let built = skin.map(|s| {
+                    SkinBuild::new(
+                        s,
+                        &state.particles.id,
+                        (&ext.position[..n_real], &ext.h[..n_real]),
+                        &self.boundaries,
+                    )
+                });
                 (list, shares, built)
             }
         };
@@ -359,9 +379,12 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
         // the list itself is kept as searched.
         let picked = ext.skin.then(|| {
             let probe = ext.pair_probe();
-            list.retain_pairs(|i, j| probe.interacts(i, j as usize))
+            list.select_pairs(|i, j| probe.interacts(i, j as usize))
         });
-        let pairs = picked.as_ref().unwrap_or(&list);
+        let pairs = match &picked {
+            Some(selection) => Pairs::selected(&list, selection),
+            None => Pairs::all(&list),
+        };
         let search = t_search.elapsed().as_secs_f64();
         // The neighbours listed for the real particles (on several ranks from the blocks'
         // costs, since each rank's list holds its own rows only).
@@ -441,10 +464,11 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
             };
             self.pair_passes(&ext, pairs, &pk, options, blocks, ranks)
         };
-        // The pairs are spent: free this stage's picked list and the columns only the
+        // The pairs are spent: free this stage's selection and the columns only the
         // passes read before the damage rates allocate theirs.
         drop(picked);
-        ext.release_pair_columns();
+        ext.release_pair_columns()
+            .put_back(&mut state.particles, n_real);
         let PairRates {
             each: mut rates_out,
             boundary,

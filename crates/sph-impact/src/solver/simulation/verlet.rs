@@ -27,9 +27,10 @@
 //! Each test is applied with a margin of 10⁻⁹ of the reach, far beyond the rounding of
 //! the distances it bounds. Each stage then picks from the list the pairs a search of its
 //! present supports would list, between live particles (`Extended::pair_probe`,
-//! `NeighborList::retain_pairs`), each row in its order, so the passes sum the same terms
-//! in the same order as after a search of the stage's own: when the list is rebuilt does
-//! not change the results, only how many searches they take.
+//! `NeighborList::select_pairs`, one bit per listed pair), each row in its order, so the
+//! passes sum the same terms in the same order as after a search of the stage's own:
+//! when the list is rebuilt does not change the results, only how many searches they
+//! take.
 
 use super::*;
 
@@ -52,15 +53,19 @@ pub(super) struct SkinBuild<D: Dimension> {
 const MARGIN: f64 = 1e-9;
 
 impl<D: Dimension> SkinBuild<D> {
-    /// The build of a list searched with skin `skin` over `state`'s particles, whose
-    /// present supports are their smoothing lengths.
-    pub(super) fn new(skin: f64, state: &State<D>, boundaries: &[Boundary<D>]) -> Self {
-        let p = &state.particles;
+    /// The build of a list searched with skin `skin` over the particles `ids`, at
+    /// `position` with the supports `h` (their smoothing lengths).
+    pub(super) fn new(
+        skin: f64,
+        ids: &[u64],
+        (position, h): (&[D::Vector], &[f64]),
+        boundaries: &[Boundary<D>],
+    ) -> Self {
         SkinBuild {
             skin,
-            ids: p.id.clone(),
-            position: p.position.clone(),
-            reach: reach(&p.smoothing_length, skin),
+            ids: ids.to_vec(),
+            position: position.to_vec(),
+            reach: reach(h, skin),
             boundaries: boundaries.to_vec(),
         }
     }
@@ -362,6 +367,12 @@ mod tests {
     use sph_core::Dim2;
     use sph_core::glam::DVec2;
 
+    /// The build of a list searched with skin `skin` over `s`'s particles.
+    fn build_of(skin: f64, s: &State<Dim2>, walls: &[Boundary<Dim2>]) -> SkinBuild<Dim2> {
+        let p = &s.particles;
+        SkinBuild::new(skin, &p.id, (&p.position, &p.smoothing_length), walls)
+    }
+
     fn state(x: &[[f64; 2]], h: f64) -> State<Dim2> {
         let mut s = State::<Dim2>::default();
         let p = &mut s.particles;
@@ -393,7 +404,7 @@ mod tests {
     fn a_list_holds_while_the_relative_displacements_fit_in_the_skin() {
         let s0 = state(&[[0.0, 0.0], [1.0, 0.0]], 1.0);
         let walls = [Boundary::<Dim2>::axis()];
-        let build = SkinBuild::new(0.2, &s0, &walls);
+        let build = build_of(0.2, &s0, &walls);
         let ghosts = plan(&s0, 0.2, &walls);
         let holds = |s: &State<Dim2>| build.holds(0.2, s, &walls, &ghosts);
         assert!(holds(&s0));
@@ -405,7 +416,7 @@ mod tests {
         // Away from the wall (no ghosts), one moves 0.11 from the other: 1 + 0.11 ≤ 1.2
         // by the displacements' boxes; 0.21: 1 + 0.21 > 1.2.
         let far = state(&[[3.0, 0.0], [4.0, 0.0]], 1.0);
-        let far_build = SkinBuild::new(0.2, &far, &walls);
+        let far_build = build_of(0.2, &far, &walls);
         let far_ghosts = plan(&far, 0.2, &walls);
         assert!(far_ghosts.is_empty());
         let mut s = far.clone();
@@ -445,7 +456,7 @@ mod tests {
             .flat_map(|&y| (0..64).map(move |k| [0.5 * k as f64, y]))
             .collect();
         let s0 = state(&x, 1.0);
-        let build = SkinBuild::new(0.1, &s0, &[]);
+        let build = build_of(0.1, &s0, &[]);
         let mut s = s0.clone();
         s.particles.position[64..]
             .iter_mut()
@@ -482,7 +493,7 @@ mod tests {
                 Boundary::<Dim2>::axis(),
                 Boundary::<Dim2>::Periodic { axis: 1, lo: -1.0, hi: 5.0 },
             ];
-            let build = SkinBuild::new(skin, &s0, &walls);
+            let build = build_of(skin, &s0, &walls);
             let ghosts = plan(&s0, skin, &walls);
             // Moves of the order of the skin: some lists hold, some do not.
             let mut s = s0.clone();
