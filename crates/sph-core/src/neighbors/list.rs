@@ -39,6 +39,22 @@ fn get_varint(bytes: &[u8], pos: &mut usize) -> u64 {
     }
 }
 
+/// The first entry's offset from the row's own index (zigzag-coded, see the module docs).
+#[inline(always)]
+fn unzigzag(code: u64) -> i64 {
+    (code >> 1) as i64 ^ -((code & 1) as i64)
+}
+
+/// The eight bytes at `pos` as a little-endian word, where all eight are one-byte codes
+/// (gaps below 128, the common case): the group decoders read them without a branch per
+/// byte.
+#[inline(always)]
+fn eight_one_byte_codes(bytes: &[u8], pos: usize) -> Option<u64> {
+    let word = bytes.get(pos..pos + 8)?;
+    let w = u64::from_le_bytes(word.try_into().expect("eight bytes"));
+    (w & 0x8080_8080_8080_8080 == 0).then_some(w)
+}
+
 /// `CHUNK` consecutive rows of a list (the last chunk may hold fewer): the encoded rows
 /// one after another, and where each starts.
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
@@ -159,8 +175,7 @@ impl Neighbors<'_> {
         if self.first
             && let Some(slot) = out.first_mut()
         {
-            let code = get_varint(bytes, &mut pos);
-            prev += (code >> 1) as i64 ^ -((code & 1) as i64);
+            prev += unzigzag(get_varint(bytes, &mut pos));
             *slot = prev as u32;
             from = 1;
             self.first = false;
@@ -170,19 +185,16 @@ impl Neighbors<'_> {
             // Eight one-byte gaps at once where the next eight bytes are all one-byte
             // codes (most gaps are below 128): no branch per byte.
             if rest.len() >= 8
-                && let Some(word) = bytes.get(pos..pos + 8)
+                && let Some(w) = eight_one_byte_codes(bytes, pos)
             {
-                let w = u64::from_le_bytes(word.try_into().expect("eight bytes"));
-                if w & 0x8080_8080_8080_8080 == 0 {
-                    let (group, tail) = rest.split_at_mut(8);
-                    for (k, slot) in group.iter_mut().enumerate() {
-                        prev += ((w >> (8 * k)) & 0x7f) as i64 + 1;
-                        *slot = prev as u32;
-                    }
-                    pos += 8;
-                    rest = tail;
-                    continue;
+                let (group, tail) = rest.split_at_mut(8);
+                for (k, slot) in group.iter_mut().enumerate() {
+                    prev += ((w >> (8 * k)) & 0x7f) as i64 + 1;
+                    *slot = prev as u32;
                 }
+                pos += 8;
+                rest = tail;
+                continue;
             }
             let (slot, tail) = rest.split_first_mut().expect("not empty");
             prev += get_varint(bytes, &mut pos) as i64 + 1;
@@ -193,9 +205,7 @@ impl Neighbors<'_> {
         self.prev = prev;
         self.left -= out.len();
     }
-}
 
-impl Neighbors<'_> {
     /// Decodes the next `take` neighbours (at most 64, and at most as many as are left)
     /// and keeps those whose bit of `selected` is set (bit k for the k-th), at the start
     /// of `out` in order; returns how many were kept. Each is written at the next free
@@ -212,8 +222,7 @@ impl Neighbors<'_> {
         let (bytes, mut pos, mut prev) = (self.bytes, self.pos, self.prev);
         let (mut k, mut n) = (0, 0);
         if self.first && take > 0 {
-            let code = get_varint(bytes, &mut pos);
-            prev += (code >> 1) as i64 ^ -((code & 1) as i64);
+            prev += unzigzag(get_varint(bytes, &mut pos));
             out[0] = prev as u32;
             n = (selected & 1) as usize;
             k = 1;
@@ -221,21 +230,18 @@ impl Neighbors<'_> {
         }
         while k < take {
             if take - k >= 8
-                && let Some(word) = bytes.get(pos..pos + 8)
+                && let Some(w) = eight_one_byte_codes(bytes, pos)
             {
-                let w = u64::from_le_bytes(word.try_into().expect("eight bytes"));
-                if w & 0x8080_8080_8080_8080 == 0 {
-                    let bits = selected >> k;
-                    for b in 0..8 {
-                        prev += ((w >> (8 * b)) & 0x7f) as i64 + 1;
-                        // n ≤ k + b < 64 here: the mask only spares a bounds test.
-                        out[n % 64] = prev as u32;
-                        n += ((bits >> b) & 1) as usize;
-                    }
-                    pos += 8;
-                    k += 8;
-                    continue;
+                let bits = selected >> k;
+                for b in 0..8 {
+                    prev += ((w >> (8 * b)) & 0x7f) as i64 + 1;
+                    // n ≤ k + b < 64 here: the mask only spares a bounds test.
+                    out[n % 64] = prev as u32;
+                    n += ((bits >> b) & 1) as usize;
                 }
+                pos += 8;
+                k += 8;
+                continue;
             }
             prev += get_varint(bytes, &mut pos) as i64 + 1;
             out[n % 64] = prev as u32;
@@ -261,7 +267,7 @@ impl Iterator for Neighbors<'_> {
         let code = get_varint(self.bytes, &mut self.pos);
         self.prev = if self.first {
             self.first = false;
-            self.prev + ((code >> 1) as i64 ^ -((code & 1) as i64))
+            self.prev + unzigzag(code)
         } else {
             self.prev + code as i64 + 1
         };

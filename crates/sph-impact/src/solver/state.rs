@@ -306,8 +306,8 @@ impl<D: Dimension> RealColumns<D> {
 
     /// Gives the columns back to `p`, the first `n` entries of each (the real
     /// particles'; the ghosts' are cut off, their room kept for the next stage). A
-    /// density that `p` was given meanwhile (a summation density) is kept: it equals
-    /// the columns' own.
+    /// summation density that `p` was given meanwhile is replaced by the lent column,
+    /// which the stage set to the same values.
     pub fn put_back(self, p: &mut Particles<D>, n: usize) {
         let RealColumns {
             mut position,
@@ -336,9 +336,7 @@ impl<D: Dimension> RealColumns<D> {
         p.position = position;
         p.velocity = velocity;
         p.mass = mass;
-        if p.density.is_empty() {
-            p.density = density;
-        }
+        p.density = density;
         p.smoothing_length = h;
     }
 }

@@ -314,10 +314,6 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
         let (list, shares, built) = match reuse {
             Some(t) => (t.list, t.shares, t.skin),
             None => {
-                // A search that fails gives the real particles' columns back first.
-                let give_back = |ext: &mut Extended<'_, D>, particles: &mut Particles<D>| {
-                    ext.release_pair_columns().put_back(particles, n_real);
-                };
                 let shares = self.shares(n_real, rows, size);
                 // On several ranks each searches the rows of its own blocks (and the
                 // particles that reach them), unless the summation density reads every row.
@@ -345,7 +341,9 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
                 let list = match searched {
                     Ok(list) => list,
                     Err(e) => {
-                        give_back(&mut ext, &mut state.particles);
+                        // A failed search gives the real particles' columns back first.
+                        ext.release_pair_columns()
+                            .put_back(&mut state.particles, n_real);
                         return Err(e.into());
                     }
                 };
