@@ -26,8 +26,8 @@
 //!
 //! `--each-stage`, `--each-step` and `--verlet` set `[solver] neighbour_search =
 //! "each-stage"`, `"each-step"` or `"verlet"` (its default skin) over the scene's own
-//! setting (`SchemeConfig::neighbour_search`); without them each scene runs as bundled:
-//! the RZ scene with its Verlet list, the 3-D scene with a search at each stage.
+//! setting (`SchemeConfig::neighbour_search`); without them each scene runs as bundled,
+//! with its Verlet list.
 
 use sph_benches::{Counting, LIVE, PEAK, peak_rss};
 use sph_core::{CellList, NeighborSearch, ScalarSupport, regions_of_rows};

@@ -359,6 +359,13 @@ fn bundled_scenes_round_trip() {
             let s = scene.scheme();
             assert_eq!((s.n_target, s.cfl), (2.5, 0.25));
             assert_eq!(s.artificial_stress.exponent, 4);
+            // A Verlet list: a search at each stage's pairs and results, to the bit
+            // (tests/verlet.rs), with fewer searches.
+            assert_eq!(
+                s.neighbour_search,
+                sph_impact::solver::NeighbourSearch::Verlet,
+                "{name}"
+            );
             if let Some(three_d) = name.strip_suffix("_rz.toml") {
                 // The same bodies and scheme as the 3-D scene (docs/scenes.md).
                 let other = Scene::from_toml_file(scene_file(&format!("{three_d}.toml"))).unwrap();

@@ -56,8 +56,9 @@ pub enum Preset {
 /// | `energy_diffusion`, `density_stabilization` | 0.1, 0.1 | specificThermalEnergyDiffusionCoefficient, densityStabilizationCoefficient (defaults 0.1) |
 ///
 /// The viscosity coefficients, CFL number, artificial stress and smoothing stay the
-/// study's (α = β = 1, 0.25, ε = 0.2, n = 4), and the neighbour search stays at each
-/// stage (Spheral's once per step is `neighbour_search = "each-step"`).
+/// study's (α = β = 1, 0.25, ε = 0.2, n = 4), and the neighbour search stays the
+/// scene's: at each stage, or a Verlet list, which gives the same pairs (Spheral's once
+/// per step is `neighbour_search = "each-step"`).
 pub fn fsisph_scheme(base: SchemeConfig) -> SchemeConfig {
     let mut s = base;
     s.damaged_moduli = true;
