@@ -4,8 +4,9 @@
 //! as bundled. For each, on 1 and 2 threads: a fixed number of RK2 steps after a warm-up,
 //! particle-steps per second in all and per core, the share of each solver phase (the
 //! neighbour search's among them) and the searches made in the timed steps; then, on the state reached, the neighbours per
-//! particle and the candidates the cell list tested per neighbour found, and the memory
-//! per particle (peak resident growth and the live heap's peak during the steps).
+//! particle, the candidates the cell list tested per neighbour found, the pair passes'
+//! evaluations per pair (`sph_impact::solver::pair_evaluations`), and the memory per
+//! particle (peak resident growth and the live heap's peak during the steps).
 //!
 //! ```text
 //! cargo bench -p sph-benches --bench scenes                 # both scenes
@@ -125,6 +126,15 @@ fn search_cost<D: sph_core::Dimension>(sim: &Simulation<D, KernelChoice>) -> (f6
             100.0 * level.candidates as f64 / grid.candidates() as f64
         );
     }
+    // How the pair passes would evaluate these pairs: once inside a block of rows, from
+    // each side across blocks (sph_impact::solver::pair_evaluations).
+    let e = sph_impact::solver::pair_evaluations(&list, p.len());
+    println!(
+        "  pair evaluations per pair {:.3}: {:.1} % of the listed pairs cross blocks of {} rows",
+        e.per_pair(),
+        100.0 * e.across_share(),
+        e.block_rows
+    );
     (pairs / p.len() as f64, grid.candidates() as f64 / pairs)
 }
 

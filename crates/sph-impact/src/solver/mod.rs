@@ -26,6 +26,7 @@ pub use config::{
 pub use damage::DamageEvents;
 pub use error::SolverError;
 pub use material::Material;
+pub use pair_blocks::{PairEvaluations, pair_evaluations};
 pub use pair_rules::{NoPairRule, PairRule, PairView};
 pub use ranks::{Gathered, OneRank, Ranks, shares};
 pub use simulation::{Conserved, PhaseTimes, Simulation, SolverCheckpoint, StepInfo};

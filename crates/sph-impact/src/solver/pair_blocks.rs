@@ -57,9 +57,94 @@ pub(crate) fn visit(i: usize, j: usize, start: usize, end: usize) -> Visit {
     }
 }
 
+/// How the pair passes evaluate a list's pairs ([`pair_evaluations`]): the directed
+/// entries of its rows by [`Visit`], over blocks of `block_rows` rows.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct PairEvaluations {
+    /// Rows per block ([`block_rows`] of the particle count).
+    pub block_rows: usize,
+    /// Entries whose pair is evaluated at that row for both particles.
+    pub both: u64,
+    /// Entries whose partner lies outside the row's block (or is a ghost): evaluated at
+    /// that row for it alone, so such a pair is evaluated from each real side.
+    pub across: u64,
+    /// Entries whose pair was evaluated at the partner's row.
+    pub done: u64,
+}
+
+impl PairEvaluations {
+    /// Pair evaluations per pair (per two directed entries): 1 when every pair lies
+    /// inside a block, 2 for a gather that evaluates each pair from both sides.
+    pub fn per_pair(&self) -> f64 {
+        let entries = self.both + self.across + self.done;
+        if entries == 0 {
+            return 0.0;
+        }
+        (self.both + self.across) as f64 / (entries as f64 / 2.0)
+    }
+
+    /// The share of the entries whose partner lies outside the row's block.
+    pub fn across_share(&self) -> f64 {
+        let entries = self.both + self.across + self.done;
+        if entries == 0 {
+            return 0.0;
+        }
+        self.across as f64 / entries as f64
+    }
+}
+
+/// Counts how the pair passes would evaluate the pairs of `list`, whose first `n` rows
+/// are the real particles' (the blocks of [`block_rows`]`(n)`): a measure of what
+/// evaluating each pair once costs at the blocks' edges (the scenes bench prints it).
+pub fn pair_evaluations(list: &sph_core::NeighborList, n: usize) -> PairEvaluations {
+    let rows = block_rows(n);
+    let mut e = PairEvaluations {
+        block_rows: rows,
+        ..PairEvaluations::default()
+    };
+    for i in 0..n.min(list.len()) {
+        let start = i / rows * rows;
+        let end = (start + rows).min(n);
+        for j in list.neighbors(i) {
+            match visit(i, j as usize, start, end) {
+                Visit::Both => e.both += 1,
+                Visit::OwnOnly => e.across += 1,
+                Visit::Done => e.done += 1,
+            }
+        }
+    }
+    e
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A chain of 600 particles, each paired with those within 3 indices: blocks of
+    /// 256 rows cut the chain twice, and each cut has 1 + 2 + 3 = 6 pairs across it.
+    #[test]
+    fn the_evaluations_of_a_chain_count_the_pairs_across_the_cuts() {
+        let n = 600;
+        let rows: Vec<Vec<u32>> = (0..n)
+            .map(|i: usize| {
+                (i.saturating_sub(3)..(i + 4).min(n))
+                    .filter(|&j| j != i)
+                    .map(|j| j as u32)
+                    .collect()
+            })
+            .collect();
+        let list = sph_core::NeighborList::from_rows(rows);
+        let e = pair_evaluations(&list, n);
+        assert_eq!(e.block_rows, 256);
+        // Pairs: 3 per particle less the chain's ends (1 + 2 + 3 = 6 missing): 1 794.
+        let pairs = 3 * n as u64 - 6;
+        assert_eq!(e.across, 2 * 2 * 6);
+        assert_eq!(e.both, pairs - 2 * 6);
+        assert_eq!(e.done, e.both);
+        let expected = (pairs + 2 * 6) as f64 / pairs as f64;
+        assert!((e.per_pair() - expected).abs() < 1e-12);
+        assert!((e.across_share() - 24.0 / (2 * pairs) as f64).abs() < 1e-12);
+    }
 
     #[test]
     fn the_rows_of_blocks_end_at_the_last_particle() {
