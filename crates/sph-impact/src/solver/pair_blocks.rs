@@ -58,10 +58,11 @@ pub(crate) fn visit(i: usize, j: usize, start: usize, end: usize) -> Visit {
 }
 
 /// How the pair passes evaluate a list's pairs ([`pair_evaluations`]): the directed
-/// entries of its rows by [`Visit`], over blocks of `block_rows` rows.
+/// entries of its rows, over the passes' blocks of `block_rows` rows, by where each
+/// pair is evaluated.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct PairEvaluations {
-    /// Rows per block ([`block_rows`] of the particle count).
+    /// Rows per block (a function of the particle count alone).
     pub block_rows: usize,
     /// Entries whose pair is evaluated at that row for both particles.
     pub both: u64,
@@ -73,43 +74,50 @@ pub struct PairEvaluations {
 }
 
 impl PairEvaluations {
-    /// Pair evaluations per pair (per two directed entries): 1 when every pair lies
-    /// inside a block, 2 for a gather that evaluates each pair from both sides.
-    pub fn per_pair(&self) -> f64 {
-        let entries = self.both + self.across + self.done;
-        if entries == 0 {
-            return 0.0;
-        }
-        (self.both + self.across) as f64 / (entries as f64 / 2.0)
+    /// Directed entries counted.
+    fn entries(&self) -> u64 {
+        self.both + self.across + self.done
     }
 
-    /// The share of the entries whose partner lies outside the row's block.
-    pub fn across_share(&self) -> f64 {
-        let entries = self.both + self.across + self.done;
-        if entries == 0 {
-            return 0.0;
+    /// Pair evaluations per pair (per two directed entries): 1 when every pair lies
+    /// inside a block, 2 for a gather that evaluates each pair from both sides; 0 for
+    /// no pairs.
+    pub fn per_pair(&self) -> f64 {
+        match self.entries() {
+            0 => 0.0,
+            e => (self.both + self.across) as f64 / (e as f64 / 2.0),
         }
-        self.across as f64 / entries as f64
+    }
+
+    /// The share of the entries whose partner lies outside the row's block; 0 for no
+    /// pairs.
+    pub fn across_share(&self) -> f64 {
+        match self.entries() {
+            0 => 0.0,
+            e => self.across as f64 / e as f64,
+        }
     }
 }
 
 /// Counts how the pair passes would evaluate the pairs of `list`, whose first `n` rows
-/// are the real particles' (the blocks of [`block_rows`]`(n)`): a measure of what
-/// evaluating each pair once costs at the blocks' edges (the scenes bench prints it).
+/// are the real particles', over the blocks the passes use for `n` particles, with the
+/// passes' own rule per neighbour: a measure of what evaluating each pair once costs at
+/// the blocks' edges (the scenes bench prints it).
 pub fn pair_evaluations(list: &sph_core::NeighborList, n: usize) -> PairEvaluations {
     let rows = block_rows(n);
     let mut e = PairEvaluations {
         block_rows: rows,
         ..PairEvaluations::default()
     };
-    for i in 0..n.min(list.len()) {
-        let start = i / rows * rows;
-        let end = (start + rows).min(n);
-        for j in list.neighbors(i) {
-            match visit(i, j as usize, start, end) {
-                Visit::Both => e.both += 1,
-                Visit::OwnOnly => e.across += 1,
-                Visit::Done => e.done += 1,
+    for b in 0..n.div_ceil(rows) {
+        let block = rows_of(&(b..b + 1), rows, n);
+        for i in block.start..block.end.min(list.len()) {
+            for j in list.neighbors(i) {
+                match visit(i, j as usize, block.start, block.end) {
+                    Visit::Both => e.both += 1,
+                    Visit::OwnOnly => e.across += 1,
+                    Visit::Done => e.done += 1,
+                }
             }
         }
     }
