@@ -352,6 +352,9 @@ fn gradients_in<D: Dimension, P: PairKernel<D>, const RZ: bool, const STUDY: boo
         .zip(corr)
         .zip(ge)
         .enumerate()
+        // The blocks to the threads one at a time: a task of several blocks left the
+        // other thread idle at the end of the pass where blocks are few (RZ: 26).
+        .with_max_len(1)
         .for_each(|(b, ((out, corr), ge))| fill(blocks.start + b, out, corr, ge));
     GradientSet {
         each,

@@ -725,17 +725,21 @@ fn rates_in<D: Dimension, P: PairKernel<D>, const RZ: bool, const STUDY: bool>(
         boundary
     };
     let own = pair_blocks::rows_of(&blocks, rows, n);
+    // The blocks go to the threads one at a time (`with_max_len(1)`), as in pass 1;
+    // the boundary lists still come back in block order.
     let boundary = if rz {
         each[own.clone()]
             .par_chunks_mut(rows)
             .zip(hoop_gauge[own].par_chunks_mut(rows))
             .enumerate()
+            .with_max_len(1)
             .flat_map_iter(|(b, (out, gauge))| fill(blocks.start + b, out, Some(gauge)))
             .collect()
     } else {
         each[own]
             .par_chunks_mut(rows)
             .enumerate()
+            .with_max_len(1)
             .flat_map_iter(|(b, out)| fill(blocks.start + b, out, None))
             .collect()
     };
