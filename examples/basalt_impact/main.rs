@@ -229,7 +229,7 @@ fn main() -> ExitCode {
     );
     match scene.check_report(scale, threads, Some(end_time)) {
         Ok(r) => println!(
-            "particles         {} ({}); estimated ≥ {:.0} steps, roughly {:.1} min on {} thread(s)",
+            "particles         {} ({}); estimated ≥ {:.0} steps, ≥ {:.1} min on {} thread(s)",
             r.particles,
             r.bodies
                 .iter()

@@ -98,7 +98,7 @@ fn verify_refuses_bad_input_with_exit_code_2() {
     let t = std::time::Instant::now();
     assert_bad_input(
         &["verify", "sod", "--resolution", "8000000000"],
-        "the largest resolution accepted is 57813904",
+        "the largest resolution accepted is 49468592",
     );
     assert_bad_input(
         &["verify", "sedov-3d", "--resolution", "100000"],

@@ -24,14 +24,17 @@ use crate::scene::error::SceneError;
 use crate::scene::settings::GeometryKind;
 use serde::Serialize;
 
-/// Derivative evaluations per second per core assumed for a solid scene: the `solid3d`
-/// bench (a 3-D Al-into-basalt scene with strength, damage and artificial stress) measured
-/// 1.05e5 (docs/performance.md).
-pub const ASSUMED_EVALUATIONS_PER_CORE_SOLID: f64 = 1.05e5;
+/// Derivative evaluations per second per core assumed for a solid scene: the scenes
+/// bench's 3-D basalt impact at A_res 1 mm (the bundled `basalt_3.9kms.toml`, full solid
+/// physics, its Verlet list) ran 8.96e4–9.19e4 particle-steps/s per core on two threads
+/// and 9.28e4–9.48e4 on one, two evaluations each (docs/performance.md, "The pair
+/// passes' blocks handed out one at a time"): 1.8e5, the two-thread figure rounded down.
+pub const ASSUMED_EVALUATIONS_PER_CORE_SOLID: f64 = 1.8e5;
 
 /// Derivative evaluations per second per core assumed for a fluid scene: the 3-D Sedov
-/// bench (1.0e5, docs/performance.md).
-pub const ASSUMED_EVALUATIONS_PER_CORE_FLUID: f64 = 1.0e5;
+/// bench with the default continuity density, 1.494e5 on one thread and 1.444e5 per core
+/// on two (docs/performance.md, "Solver throughput (sph-impact, 3-D Sedov)"): 1.4e5.
+pub const ASSUMED_EVALUATIONS_PER_CORE_FLUID: f64 = 1.4e5;
 
 /// An RZ particle costs less than a 3-D one by the ratio of neighbour counts in the
 /// support, (4π/3) n³ / (π n²) = 4n/3 for n = 2.5 spacings per support radius (65.4
@@ -47,9 +50,11 @@ pub const RZ_RATE_FACTOR: f64 = 4.0 * 2.5 / 3.0;
 pub const LINE_RATE_FACTOR: f64 = 2.0 * std::f64::consts::PI / 3.0 * 2.5 * 2.5;
 
 /// Memory per particle assumed (bytes): the peak resident growth per particle of the
-/// `solid3d` bench, 984 bytes (the step's start and midpoint states, the neighbour list
-/// at ≈ 65 neighbours, the pair loops' extended arrays and scratch; docs/performance.md).
-pub const ASSUMED_BYTES_PER_PARTICLE: f64 = 984.0;
+/// scenes bench's 3-D basalt impact at A_res 1 mm, 1 150 bytes (its set-up included: the
+/// placement's scratch; the steps' own live-heap peak is 978 bytes: the step's start and
+/// midpoint states, the Verlet list at ≈ 66 neighbours, the pair passes' extended arrays;
+/// docs/performance.md, "The bundled 3-D scenes on the Verlet list").
+pub const ASSUMED_BYTES_PER_PARTICLE: f64 = 1150.0;
 
 /// One body in the check report.
 #[derive(Clone, Debug, Serialize)]

@@ -552,7 +552,7 @@ mod tests {
         let e = Problem::Sod.run(Some(8_000_000_000)).unwrap_err();
         let m = e.to_string();
         assert!(
-            m.contains("the largest resolution accepted is 57813904"),
+            m.contains("the largest resolution accepted is 49468592"),
             "{m}"
         );
         assert!(
