@@ -5,9 +5,9 @@
 //! (pair_blocks.rs); each rank takes a contiguous range of blocks, balanced by the
 //! neighbour count of their rows (a pair's cost), sums its blocks as a single process
 //! would, and the ranks then share what the others read: after pass 1, each rank
-//! receives the gradients of the rows its own rows' pairs read (its [`Halo`]) and every
-//! rank's strain-rate gradient, which the stress update reads for every particle; after
-//! pass 2, every rank's rates. A block's sums do not depend on which rank adds them, so
+//! receives the gradients of the rows its own rows' pairs read (its halo,
+//! solver/ranks/halo.rs) and every rank's strain-rate gradient, which the stress update
+//! reads for every particle; after pass 2, every rank's rates. A block's sums do not depend on which rank adds them, so
 //! a run gives the same bits on any number of ranks and threads, and a checkpoint
 //! written on some number of ranks resumes on any other.
 //!
