@@ -50,10 +50,11 @@ pub const RZ_RATE_FACTOR: f64 = 4.0 * 2.5 / 3.0;
 pub const LINE_RATE_FACTOR: f64 = 2.0 * std::f64::consts::PI / 3.0 * 2.5 * 2.5;
 
 /// Memory per particle assumed (bytes): the peak resident growth per particle of the
-/// scenes bench's 3-D basalt impact at A_res 1 mm, 1 150 bytes (its set-up included: the
-/// placement's scratch; the steps' own live-heap peak is 978 bytes: the step's start and
-/// midpoint states, the Verlet list at ≈ 66 neighbours, the pair passes' extended arrays;
-/// docs/performance.md, "The bundled 3-D scenes on the Verlet list").
+/// scenes bench's 3-D basalt impact at A_res 1 mm, 1 149 bytes rounded up (its set-up
+/// included: the placement's scratch; the steps' own live-heap peak is 978 bytes: the
+/// step's start and midpoint states, the Verlet list at ≈ 66 neighbours, the pair passes'
+/// extended arrays; docs/performance.md, "The pair passes' blocks handed out one at a
+/// time").
 pub const ASSUMED_BYTES_PER_PARTICLE: f64 = 1150.0;
 
 /// One body in the check report.

@@ -7,9 +7,9 @@
 //! would, and the ranks then share what the others read: after pass 1, each rank
 //! receives the gradients of the rows its own rows' pairs read (its halo,
 //! solver/ranks/halo.rs) and every rank's strain-rate gradient, which the stress update
-//! reads for every particle; after pass 2, every rank's rates. A block's sums do not depend on which rank adds them, so
-//! a run gives the same bits on any number of ranks and threads, and a checkpoint
-//! written on some number of ranks resumes on any other.
+//! reads for every particle; after pass 2, every rank's rates. A block's sums do not
+//! depend on which rank adds them, so a run gives the same bits on any number of ranks
+//! and threads, and a checkpoint written on some number of ranks resumes on any other.
 //!
 //! The state is replicated, not distributed: memory per rank is that of one process,
 //! and the neighbour search, the EOS and the integration run on every rank.
