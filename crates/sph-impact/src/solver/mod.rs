@@ -16,6 +16,7 @@ pub mod ranks;
 pub mod simulation;
 pub mod state;
 pub mod timestep;
+mod warm_threads;
 
 pub use axisymmetric::Geometry;
 pub use boundary::Boundary;

@@ -28,6 +28,7 @@ use crate::solver::pair_rules::{NoPairRule, PairRule};
 use crate::solver::ranks::{self, OneRank, Ranks};
 use crate::solver::state::{Extended, Ghosts, PlacedGhost, RealColumns, State};
 use crate::solver::timestep::{TimestepVote, acceleration_vote, cfl_vote, density_vote};
+use crate::solver::warm_threads::KeepAwake;
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 use sph_core::{
@@ -207,6 +208,8 @@ pub struct Simulation<D: Dimension, K: Kernel, R: PairRule<D> = NoPairRule> {
     midpoint: State<D>,
     /// A Verlet list kept for the next stage (`NeighbourSearch::Verlet`).
     kept: Option<Topology<D>>,
+    /// Whether the next step keeps the pool's threads awake (solver/warm_threads.rs).
+    keep_awake: KeepAwake,
 }
 
 impl<D: Dimension, K: Kernel> Simulation<D, K> {
@@ -333,6 +336,7 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
             flight: FreeFlight::default(),
             midpoint: State::default(),
             kept: None,
+            keep_awake: KeepAwake::default(),
         })
     }
 
@@ -364,6 +368,7 @@ impl<D: Dimension, K: Kernel> Simulation<D, K> {
             flight: self.flight,
             midpoint: self.midpoint,
             kept: self.kept,
+            keep_awake: self.keep_awake,
         }
     }
 }
@@ -561,6 +566,10 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
     /// every rank calls it with the same state and `max_dt`, and every rank ends the
     /// step with the same state, the same bits as [`Self::step`] gives.
     pub fn step_over(&mut self, max_dt: f64, ranks: &dyn Ranks) -> Result<StepInfo, SolverError> {
+        // The pool's other threads stay awake between a short step's passes
+        // (warm_threads.rs).
+        let started = Instant::now();
+        let _warm = self.keep_awake.for_step();
         let mut s0_state = std::mem::take(&mut self.state);
         // One search per step (NeighbourSearch::EachStep): the first stage keeps its list
         // and ghosts for the second. A Verlet list is kept while it holds.
@@ -725,6 +734,7 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
                 .take(&mut self.state, &mut self.held, &mut self.radius0, &leave);
         }
         self.timings.integration += t1.elapsed().as_secs_f64();
+        self.keep_awake.step_took(started.elapsed());
         Ok(StepInfo {
             dt,
             vote,

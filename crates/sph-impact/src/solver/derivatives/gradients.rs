@@ -3,6 +3,7 @@
 
 use super::*;
 use crate::solver::chunks::chunks_or_none;
+use crate::solver::warm_threads::for_each_awake;
 
 /// Per-particle gradients (pass 1).
 #[derive(Clone, Copy, Debug)]
@@ -347,15 +348,18 @@ fn gradients_in<D: Dimension, P: PairKernel<D>, const RZ: bool, const STUDY: boo
     }
     let corr = chunks_or_none(rows_or_empty(&mut correction, &own), rows, n_blocks);
     let ge = chunks_or_none(rows_or_empty(&mut grad_e, &own), rows, n_blocks);
-    each[own]
+    // The blocks to the threads one task each: a task of several blocks left the other
+    // thread idle at the end of the pass where blocks are few (RZ: 26); and the thread
+    // that finishes first does not sleep while the last blocks run (warm_threads.rs).
+    let tasks: Vec<_> = each[own]
         .par_chunks_mut(rows)
         .zip(corr)
         .zip(ge)
         .enumerate()
-        // The blocks to the threads one at a time: a task of several blocks left the
-        // other thread idle at the end of the pass where blocks are few (RZ: 26).
-        .with_max_len(1)
-        .for_each(|(b, ((out, corr), ge))| fill(blocks.start + b, out, corr, ge));
+        .collect();
+    for_each_awake(tasks, |(b, ((out, corr), ge))| {
+        fill(blocks.start + b, out, corr, ge)
+    });
     GradientSet {
         each,
         correction,

@@ -6,6 +6,7 @@ use super::pair_scheme::PairScheme;
 use super::switch::viscosity_switch_factors;
 use super::*;
 use crate::solver::pair_rules::{PairRule, PairView};
+use crate::solver::warm_threads::for_each_awake;
 
 /// Per-particle time derivatives and time-step ingredients (pass 2).
 #[derive(Clone, Copy, Debug)]
@@ -725,24 +726,30 @@ fn rates_in<D: Dimension, P: PairKernel<D>, const RZ: bool, const STUDY: bool>(
         boundary
     };
     let own = pair_blocks::rows_of(&blocks, rows, n);
-    // The blocks go to the threads one at a time (`with_max_len(1)`), as in pass 1;
-    // the boundary lists still come back in block order.
-    let boundary = if rz {
-        each[own.clone()]
+    // The blocks go to the threads one task each, as in pass 1 (warm_threads.rs); the
+    // boundary lists still come back in block order.
+    let mut lists = vec![Vec::new(); own.len().div_ceil(rows)];
+    if rz {
+        let tasks: Vec<_> = each[own.clone()]
             .par_chunks_mut(rows)
             .zip(hoop_gauge[own].par_chunks_mut(rows))
+            .zip(lists.par_iter_mut())
             .enumerate()
-            .with_max_len(1)
-            .flat_map_iter(|(b, (out, gauge))| fill(blocks.start + b, out, Some(gauge)))
-            .collect()
+            .collect();
+        for_each_awake(tasks, |(b, ((out, gauge), list))| {
+            *list = fill(blocks.start + b, out, Some(gauge))
+        });
     } else {
-        each[own]
+        let tasks: Vec<_> = each[own]
             .par_chunks_mut(rows)
+            .zip(lists.par_iter_mut())
             .enumerate()
-            .with_max_len(1)
-            .flat_map_iter(|(b, out)| fill(blocks.start + b, out, None))
-            .collect()
-    };
+            .collect();
+        for_each_awake(tasks, |(b, (out, list))| {
+            *list = fill(blocks.start + b, out, None)
+        });
+    }
+    let boundary = lists.into_iter().flatten().collect();
     PairRates {
         each,
         boundary,
