@@ -16,3 +16,9 @@ pub(crate) fn chunks_or_none<T: Send>(
         rayon::iter::Either::Right(v.par_chunks_mut(chunk).map(Some))
     }
 }
+
+/// An optional column's rows `own`, or the empty column itself where the run does not
+/// keep it (for [`chunks_or_none`]).
+pub(crate) fn rows_or_empty<'a, T>(v: &'a mut [T], own: &std::ops::Range<usize>) -> &'a mut [T] {
+    if v.is_empty() { v } else { &mut v[own.clone()] }
+}

@@ -18,6 +18,7 @@
 //! Which thread runs which job never changes a result: the passes' sums are fixed by
 //! their blocks (solver/pair_blocks.rs), not by the threads that add them.
 
+use rayon::iter::IndexedParallelIterator;
 use std::sync::Arc;
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 use std::time::{Duration, Instant};
@@ -100,7 +101,8 @@ impl Drop for WarmThreads {
 /// to sleep and must be woken at the end; here that thread keeps taking the pool's jobs
 /// (`rayon::yield_now`) until every task is done, so the pass ends as soon as its last
 /// task does. On a pool of one thread the items run in order.
-pub(crate) fn for_each_awake<T: Send>(items: Vec<T>, f: impl Fn(T) + Sync) {
+pub(crate) fn for_each_awake<I: IndexedParallelIterator>(items: I, f: impl Fn(I::Item) + Sync) {
+    let items: Vec<I::Item> = items.collect();
     if rayon::current_num_threads() < 2 {
         items.into_iter().for_each(f);
         return;
@@ -203,12 +205,14 @@ mod tests {
             let mut out = vec![0u64; 50];
             let items: Vec<(usize, &mut u64)> = out.iter_mut().enumerate().collect();
             pool(threads).install(|| {
-                for_each_awake(items, |(k, slot)| *slot += (k * k) as u64);
+                for_each_awake(items.into_par_iter(), |(k, slot)| *slot += (k * k) as u64);
             });
             assert!(out.iter().enumerate().all(|(k, &v)| v == (k * k) as u64));
         }
         let caught = std::panic::catch_unwind(|| {
-            pool(2).install(|| for_each_awake(vec![1, 2, 3], |k| assert!(k != 2, "task 2")));
+            pool(2).install(|| {
+                for_each_awake(vec![1, 2, 3].into_par_iter(), |k| assert!(k != 2, "task 2"))
+            });
         });
         assert!(caught.is_err());
     }

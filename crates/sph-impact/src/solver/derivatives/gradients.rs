@@ -2,7 +2,7 @@
 //! correction M⁻¹ and the grad-h factor Ω, from sums over its neighbours.
 
 use super::*;
-use crate::solver::chunks::chunks_or_none;
+use crate::solver::chunks::{chunks_or_none, rows_or_empty};
 use crate::solver::warm_threads::for_each_awake;
 
 /// Per-particle gradients (pass 1).
@@ -342,21 +342,12 @@ fn gradients_in<D: Dimension, P: PairKernel<D>, const RZ: bool, const STUDY: boo
     // Only the blocks `blocks` (this rank's; solver/ranks.rs): the other rows stay unset.
     let own = pair_blocks::rows_of(&blocks, rows, n);
     let n_blocks = own.len().div_ceil(rows);
-    // An optional column's own rows, or nothing where the column is not kept.
-    fn rows_or_empty<'a, T>(v: &'a mut [T], own: &Range<usize>) -> &'a mut [T] {
-        if v.is_empty() { v } else { &mut v[own.clone()] }
-    }
     let corr = chunks_or_none(rows_or_empty(&mut correction, &own), rows, n_blocks);
     let ge = chunks_or_none(rows_or_empty(&mut grad_e, &own), rows, n_blocks);
     // The blocks to the threads one task each: a task of several blocks left the other
     // thread idle at the end of the pass where blocks are few (RZ: 26); and the thread
     // that finishes first does not sleep while the last blocks run (warm_threads.rs).
-    let tasks: Vec<_> = each[own]
-        .par_chunks_mut(rows)
-        .zip(corr)
-        .zip(ge)
-        .enumerate()
-        .collect();
+    let tasks = each[own].par_chunks_mut(rows).zip(corr).zip(ge).enumerate();
     for_each_awake(tasks, |(b, ((out, corr), ge))| {
         fill(blocks.start + b, out, corr, ge)
     });

@@ -5,6 +5,7 @@
 use super::pair_scheme::PairScheme;
 use super::switch::viscosity_switch_factors;
 use super::*;
+use crate::solver::chunks::{chunks_or_none, rows_or_empty};
 use crate::solver::pair_rules::{PairRule, PairView};
 use crate::solver::warm_threads::for_each_awake;
 
@@ -727,28 +728,18 @@ fn rates_in<D: Dimension, P: PairKernel<D>, const RZ: bool, const STUDY: bool>(
     };
     let own = pair_blocks::rows_of(&blocks, rows, n);
     // The blocks go to the threads one task each, as in pass 1 (warm_threads.rs); the
-    // boundary lists still come back in block order.
-    let mut lists = vec![Vec::new(); own.len().div_ceil(rows)];
-    if rz {
-        let tasks: Vec<_> = each[own.clone()]
-            .par_chunks_mut(rows)
-            .zip(hoop_gauge[own].par_chunks_mut(rows))
-            .zip(lists.par_iter_mut())
-            .enumerate()
-            .collect();
-        for_each_awake(tasks, |(b, ((out, gauge), list))| {
-            *list = fill(blocks.start + b, out, Some(gauge))
-        });
-    } else {
-        let tasks: Vec<_> = each[own]
-            .par_chunks_mut(rows)
-            .zip(lists.par_iter_mut())
-            .enumerate()
-            .collect();
-        for_each_awake(tasks, |(b, (out, list))| {
-            *list = fill(blocks.start + b, out, None)
-        });
-    }
+    // boundary lists still come back in block order. The hoop gauge is RZ's only.
+    let n_blocks = own.len().div_ceil(rows);
+    let mut lists = vec![Vec::new(); n_blocks];
+    let gauge = chunks_or_none(rows_or_empty(&mut hoop_gauge, &own), rows, n_blocks);
+    let tasks = each[own]
+        .par_chunks_mut(rows)
+        .zip(gauge)
+        .zip(lists.par_iter_mut())
+        .enumerate();
+    for_each_awake(tasks, |(b, ((out, gauge), list))| {
+        *list = fill(blocks.start + b, out, gauge)
+    });
     let boundary = lists.into_iter().flatten().collect();
     PairRates {
         each,
