@@ -130,10 +130,12 @@ fn search_cost<D: sph_core::Dimension>(sim: &Simulation<D, KernelChoice>) -> (f6
     // each side across blocks (sph_impact::solver::pair_evaluations).
     let e = sph_impact::solver::pair_evaluations(&list, p.len());
     println!(
-        "  pair evaluations per pair {:.3}: {:.1} % of the listed pairs cross blocks of {} rows",
+        "  pair evaluations per pair {:.3}: {:.1} % of the listed pairs cross blocks of {} rows, \
+         whose rows list {:.3} particles of later blocks per particle",
         e.per_pair(),
         100.0 * e.across_share(),
-        e.block_rows
+        e.block_rows,
+        e.later as f64 / p.len() as f64
     );
     (pairs / p.len() as f64, grid.candidates() as f64 / pairs)
 }
