@@ -71,7 +71,8 @@ fn chunks_or_none<T: Send>(
 /// Wall-clock seconds spent per phase, and the work done.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
 pub struct PhaseTimes {
-    /// The neighbour search itself (`CellList::neighbors`).
+    /// The neighbour search (`CellList::neighbors`) and, with a Verlet list, each stage's
+    /// test of whether the kept list still holds and its picking of the stage's pairs.
     pub neighbours: f64,
     /// The pair arrays around it: supports, ghosts, RZ radii, summation density and
     /// artificial stresses.
@@ -84,7 +85,7 @@ pub struct PhaseTimes {
     pub gradients: f64,
     /// Pair loop (rates).
     pub pairs: f64,
-    /// State updates, smoothing lengths, checks.
+    /// The time-step vote, state updates, smoothing lengths, checks.
     pub integration: f64,
     /// The ranks' gathers of the pair passes' rows (0 on one rank; solver/ranks.rs).
     #[serde(default)]
@@ -574,12 +575,16 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
         // One search per step (NeighbourSearch::EachStep): the first stage keeps its list
         // and ghosts for the second. A Verlet list is kept while it holds.
         let search = self.scheme.neighbour_search;
+        let t_list = Instant::now();
         let kept = self.verlet_list_for(&s0_state);
+        self.timings.neighbours += t_list.elapsed().as_secs_f64();
         let keep = search != NeighbourSearch::EachStage;
         let (s0, topology) = match self.stage(&mut s0_state, kept, keep, ranks) {
             Ok(stage) => stage,
             Err(e) => return Err(self.put_back(s0_state, e)),
         };
+        // The vote counts with the update that follows it (PhaseTimes::integration).
+        let t0 = Instant::now();
         let vote = self.vote(&s0_state, &s0);
         let dt = vote.dt.min(max_dt);
         // The floor applies to the vote, not to a step shortened to land on an end time.
@@ -613,7 +618,6 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
             };
             return Err(self.put_back(s0_state, error));
         }
-        let t0 = Instant::now();
         let mut half = std::mem::take(&mut self.midpoint);
         half.copy_evolving_from(&s0_state);
         // The midpoint holds the constant fields until the step's end; the start state
@@ -646,12 +650,14 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
         drop(s0);
         self.timings.integration += t0.elapsed().as_secs_f64();
         let verlet = search == NeighbourSearch::Verlet;
+        let t_list = Instant::now();
         let reuse = if verlet {
             self.kept = topology;
             self.verlet_list_for(&half)
         } else {
             topology
         };
+        self.timings.neighbours += t_list.elapsed().as_secs_f64();
         let stage = self.stage(&mut half, reuse, verlet, ranks);
         half.swap_constants(&mut s0_state);
         let (s1, kept) = match stage {
