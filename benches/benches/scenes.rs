@@ -5,8 +5,10 @@
 //! particle-steps per second in all and per core, the share of each solver phase (the
 //! neighbour search's among them) and the searches made in the timed steps; then, on the state reached, the neighbours per
 //! particle, the candidates the cell list tested per neighbour found, the pair passes'
-//! evaluations per pair (`sph_impact::solver::pair_evaluations`), and the memory per
-//! particle (peak resident growth and the live heap's peak during the steps).
+//! evaluations per pair, pairs across blocks and particles of later blocks listed
+//! (`sph_impact::solver::pair_evaluations`), and the memory per particle (peak resident
+//! growth and the live heap's peak during the steps). "neighbours" includes a Verlet
+//! list's test of whether it holds (`PhaseTimes::neighbours`).
 //!
 //! ```text
 //! cargo bench -p sph-benches --bench scenes                 # both scenes
