@@ -389,7 +389,12 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
         let entries = if size > 1 {
             self.block_costs.iter().sum::<u64>() - n_real as u64
         } else {
-            (0..n_real).map(|i| pairs.count(i) as u64).sum::<u64>()
+            // In parallel: an integer sum, the same in any order.
+            (0..n_real)
+                .into_par_iter()
+                .with_min_len(1024)
+                .map(|i| pairs.count(i) as u64)
+                .sum::<u64>()
         };
         if self.scheme.density == DensityForm::Summation {
             // Density from the positions, then the EOS again with it (real and ghosts).

@@ -94,9 +94,13 @@ impl<D: Dimension> SkinBuild<D> {
         };
         let distance: Vec<f64> = displacement().map(|d| d.norm()).collect();
         // The largest displacement; a NaN one stops the list (the next search reports it).
+        // The same in any order (the largest, or a NaN if any), so reduced in parallel.
+        let keep = |m: f64, d: f64| if d > m || d.is_nan() { d } else { m };
         let largest = distance
-            .iter()
-            .fold(0.0_f64, |m, &d| if d > m || d.is_nan() { d } else { m });
+            .par_iter()
+            .with_min_len(1024)
+            .copied()
+            .reduce(|| 0.0, keep);
         if !largest.is_finite() {
             return false;
         }
@@ -212,7 +216,13 @@ impl<'a, D: Dimension> Moved<'a, D> {
         let n = self.moved.len();
         // Cells a little larger than every support: i's neighbours lie in i's cell and
         // the cells around it, whatever the rounding of the positions.
-        let side = self.h.iter().fold(0.0_f64, |m, &h| m.max(h)) * (1.0 + 1e-6);
+        let side = self
+            .h
+            .par_iter()
+            .with_min_len(1024)
+            .copied()
+            .reduce(|| 0.0, f64::max)
+            * (1.0 + 1e-6);
         if !(side > 0.0 && side.is_finite()) {
             return false;
         }
