@@ -271,6 +271,42 @@ fn search_only(case: &Case) {
             largest / (whole / domains as f64)
         );
     }
+    // A Verlet list's picking (`NeighborList::select_pairs`, once per stage): the pairs
+    // within max(h_i, h_j) of the list searched with the scene's skin, by the solver's
+    // test (sph-impact's `PairProbe`).
+    if let Some(skin) = sim.scheme.skin() {
+        let reach: Vec<f64> = p
+            .smoothing_length
+            .iter()
+            .map(|h| h * (1.0 + skin))
+            .collect();
+        let list = grid
+            .neighbors(&p.position, &ScalarSupport::new(&reach).expect("radii"))
+            .expect("search");
+        let probe: Vec<_> = p
+            .position
+            .iter()
+            .zip(&p.smoothing_length)
+            .map(|(&x, &h)| (x, h))
+            .collect();
+        let keep = |i: usize, j: u32| {
+            let ((xi, hi), (xj, hj)) = (probe[i], probe[j as usize]);
+            let s = hi.max(hj);
+            (xi - xj).length_squared() < s * s
+        };
+        let t0 = Instant::now();
+        let mut selection = list.select_pairs(keep);
+        for _ in 1..10 {
+            selection = list.select_pairs(keep);
+        }
+        let one = t0.elapsed().as_secs_f64() / 10.0;
+        let pairs = sph_core::Pairs::selected(&list, &selection);
+        let picked = (0..p.len()).map(|i| pairs.count(i)).sum::<usize>();
+        println!(
+            "  skin {skin}: one picking {one:.4} s, {picked} of {} listed pairs",
+            list.total_pairs()
+        );
+    }
     for skin in [1.05, 1.1, 1.2] {
         let h: Vec<f64> = p.smoothing_length.iter().map(|h| h * skin).collect();
         let support = ScalarSupport::new(&h).expect("radii");

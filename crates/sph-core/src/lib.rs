@@ -45,8 +45,9 @@ pub use dimension::{Dim1, Dim2, Dim3, Dimension};
 pub use eigen::SymEigen;
 pub use error::CoreError;
 pub use neighbors::{
-    CellList, NeighborList, NeighborSearch, Neighbors, PairCriterion, PairSelection, Pairs, Region,
-    ScalarSupport, TensorSupport, brute_force_neighbors, halo, regions_of_rows,
+    CellList, NeighborList, NeighborSearch, Neighbors, PairCriterion, PairSelection, Pairs,
+    PickedRows, Region, RowPicker, ScalarSupport, TensorSupport, brute_force_neighbors, halo,
+    regions_of_rows,
 };
 pub use particles::{ParticleInit, Particles};
 pub use permutation::{Permutation, morton_order};

@@ -26,7 +26,7 @@ pub use criterion::{PairCriterion, ScalarSupport, TensorSupport};
 pub use grid::{CellList, DEFAULT_CELL_FRACTION, DEFAULT_MAX_LEVELS, LevelStats};
 pub use halo::{Region, halo, regions_of_rows};
 pub use list::{NeighborList, Neighbors};
-pub use selection::{PairSelection, Pairs};
+pub use selection::{PairSelection, Pairs, PickedRows, RowPicker};
 
 use crate::error::CoreError;
 use crate::vector::Vector;

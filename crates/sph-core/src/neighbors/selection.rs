@@ -7,7 +7,9 @@
 //! a byte per listed pair and the row's first bit (4 bytes per particle). Setting a bit
 //! is cheaper than encoding the pair, too. The pair passes then decode each row of the
 //! kept list into a buffer and keep the selected pairs without a branch per pair
-//! ([`Pairs::row`]).
+//! ([`Pairs::row`]). A pass that reads every row anyway can make the selection as it
+//! goes ([`RowPicker`], [`PairSelection::assemble`]): each row decoded once, the same
+//! bits as [`NeighborList::select_pairs`].
 
 use super::NeighborList;
 use super::list::CHUNK;
@@ -84,6 +86,106 @@ impl PairSelection {
     }
 }
 
+/// The selection bits of one chunk as its rows are tested, in order.
+struct ChunkBuilder {
+    bits: ChunkBits,
+    /// The bits of the word being filled, and the chunk's bits so far.
+    word: u64,
+    bit: usize,
+}
+
+impl ChunkBuilder {
+    /// For a chunk of `rows` rows listing `pairs` pairs.
+    fn new(rows: usize, pairs: usize) -> Self {
+        let mut starts = Vec::with_capacity(rows + 1);
+        starts.push(0);
+        ChunkBuilder {
+            bits: ChunkBits {
+                starts,
+                words: Vec::with_capacity(pairs.div_ceil(GROUP)),
+            },
+            word: 0,
+            bit: 0,
+        }
+    }
+
+    /// Rows of the chunk tested so far.
+    fn rows(&self) -> usize {
+        self.bits.starts.len() - 1
+    }
+
+    /// Tests the next row, particle `i` with the decoded neighbours `row`, storing the
+    /// answers as bits. The tests run in runs that fill the current word: each run's bits
+    /// gather in a register, with no store and no branch between two tests, so the loads
+    /// of the partners' data can all be under way at once.
+    #[inline]
+    fn push_row<F: Fn(usize, u32) -> bool>(&mut self, i: usize, row: &[u32], keep: &F) {
+        self.push_row_with(i, row, keep, |_, _| {});
+    }
+
+    /// [`Self::push_row`], calling `each(j, kept)` for each pair as it is tested.
+    #[inline(always)]
+    fn push_row_with<F, E>(&mut self, i: usize, row: &[u32], keep: &F, mut each: E)
+    where
+        F: Fn(usize, u32) -> bool,
+        E: FnMut(u32, bool),
+    {
+        let mut rest = row;
+        while !rest.is_empty() {
+            let at = self.bit % GROUP;
+            let (run, later) = rest.split_at((GROUP - at).min(rest.len()));
+            let mut m = 0u64;
+            for (b, &j) in run.iter().enumerate() {
+                let kept = keep(i, j);
+                each(j, kept);
+                m |= u64::from(kept) << b;
+            }
+            self.word |= m << at;
+            self.bit += run.len();
+            if self.bit.is_multiple_of(GROUP) {
+                self.bits.words.push(self.word);
+                self.word = 0;
+            }
+            rest = later;
+        }
+        self.bits.starts.push(
+            u32::try_from(self.bit).expect("a chunk of 256 rows lists fewer than 2^32 pairs"),
+        );
+    }
+
+    fn finish(mut self) -> ChunkBits {
+        if !self.bit.is_multiple_of(GROUP) {
+            self.bits.words.push(self.word);
+        }
+        self.bits
+    }
+}
+
+/// Tests the rows `from..` of chunk `c` into `b`, each decoded into `row`.
+fn push_rows<F: Fn(usize, u32) -> bool>(
+    c: &super::list::Chunk,
+    b: &mut ChunkBuilder,
+    row: &mut Vec<u32>,
+    keep: &F,
+) {
+    for k in b.rows()..c.rows() {
+        let len = decode(c, k, row);
+        b.push_row(c.first_row() + k, &row[..len], keep);
+    }
+}
+
+/// Decodes row `k` of chunk `c` into `row` (grown as needed); returns its length.
+#[inline]
+fn decode(c: &super::list::Chunk, k: usize, row: &mut Vec<u32>) -> usize {
+    let mut listed = c.row(k);
+    let len = listed.len();
+    if row.len() < len {
+        row.resize(len, 0);
+    }
+    listed.fill(&mut row[..len]);
+    len
+}
+
 impl NeighborList {
     /// The pairs of this list that `keep(i, j)` accepts: one pass over the rows, in
     /// parallel by chunks. `keep` is called for every listed pair and its answer stored
@@ -94,48 +196,126 @@ impl NeighborList {
     where
         F: Fn(usize, u32) -> bool + Sync,
     {
+        PairSelection::assemble(self, Vec::new(), keep)
+    }
+
+    /// A [`RowPicker`] over this list: the selection of [`Self::select_pairs`] made
+    /// while a pass reads the rows, so that the pass decodes each row once and finds
+    /// the partners' data it tests already in cache.
+    pub fn picker(&self) -> RowPicker<'_> {
+        RowPicker {
+            list: self,
+            open: None,
+            done: Vec::new(),
+            row: Vec::new(),
+        }
+    }
+}
+
+/// Picks a list's pairs row by row as a pass reads them ([`NeighborList::picker`]): each
+/// [`Self::row`] tests a row's listed pairs with `keep`, as
+/// [`NeighborList::select_pairs`] does, and hands back the accepted ones in order.
+/// Several pickers may share a list's rows out (one per block of rows); their
+/// [`PickedRows`] then make the whole selection ([`PairSelection::assemble`]), which
+/// is [`NeighborList::select_pairs`]'s with the same test, bit for bit.
+pub struct RowPicker<'a> {
+    list: &'a NeighborList,
+    /// The chunk being filled: its index and bits so far.
+    open: Option<(usize, ChunkBuilder)>,
+    done: Vec<(usize, ChunkBits)>,
+    row: Vec<u32>,
+}
+
+/// The chunks of a list that a [`RowPicker`] tested, for [`PairSelection::assemble`].
+pub struct PickedRows(Vec<(usize, ChunkBits)>);
+
+impl RowPicker<'_> {
+    /// The pairs of row `i` that `keep(i, j)` accepts, in the list's order, written into
+    /// `out` (grown as needed). Rows come in ascending order; rows skipped within a
+    /// chunk are tested too (their pairs are not handed back), so that each chunk the
+    /// picker opens is whole when it closes.
+    ///
+    /// # Panics
+    /// If `i` is not after the previous row asked for.
+    pub fn row<'s, F>(&mut self, i: usize, keep: &F, out: &'s mut Vec<u32>) -> &'s [u32]
+    where
+        F: Fn(usize, u32) -> bool,
+    {
+        let c = i / CHUNK;
+        if self.open.as_ref().is_some_and(|(open, _)| *open != c) {
+            self.close(keep);
+        }
+        let chunk = &self.list.chunks()[c];
+        let (open, b) = self
+            .open
+            .get_or_insert_with(|| (c, ChunkBuilder::new(chunk.rows(), chunk.pairs())));
+        debug_assert_eq!(*open, c);
+        let k = i % CHUNK;
+        assert!(b.rows() <= k, "rows are picked in ascending order");
+        for skipped in b.rows()..k {
+            let len = decode(chunk, skipped, &mut self.row);
+            b.push_row(chunk.first_row() + skipped, &self.row[..len], keep);
+        }
+        let len = decode(chunk, k, &mut self.row);
+        if out.len() < len {
+            out.resize(len, 0);
+        }
+        // Each pair written at the next free place as it is tested, which moves on only
+        // if it is accepted (no branch per pair).
+        let mut n = 0;
+        b.push_row_with(i, &self.row[..len], keep, |j, kept| {
+            out[n] = j;
+            n += usize::from(kept);
+        });
+        &out[..n]
+    }
+
+    /// Closes the open chunk, testing its rows not yet asked for.
+    fn close<F: Fn(usize, u32) -> bool>(&mut self, keep: &F) {
+        if let Some((c, mut b)) = self.open.take() {
+            push_rows(&self.list.chunks()[c], &mut b, &mut self.row, keep);
+            self.done.push((c, b.finish()));
+        }
+    }
+
+    /// The chunks tested, the last one completed with `keep`.
+    pub fn finish<F: Fn(usize, u32) -> bool>(mut self, keep: &F) -> PickedRows {
+        self.close(keep);
+        PickedRows(self.done)
+    }
+}
+
+impl PairSelection {
+    /// The selection of `list` made of the pickers' chunks (each from a [`RowPicker`] of
+    /// `list` with the test `keep`), the chunks none of them opened picked here with
+    /// `keep`: [`NeighborList::select_pairs`]`(keep)`, bit for bit.
+    ///
+    /// # Panics
+    /// If two pickers opened the same chunk.
+    pub fn assemble<F>(list: &NeighborList, picked: Vec<PickedRows>, keep: F) -> PairSelection
+    where
+        F: Fn(usize, u32) -> bool + Sync,
+    {
         use rayon::prelude::*;
-        let chunks = self
-            .chunks()
-            .par_iter()
-            .map(|c| {
-                let rows = c.rows();
-                let mut starts = Vec::with_capacity(rows + 1);
-                let mut words = Vec::with_capacity(c.pairs().div_ceil(GROUP));
-                let (mut word, mut bit) = (0u64, 0usize);
-                starts.push(0);
-                let mut row = Vec::new();
-                for k in 0..rows {
-                    let i = c.first_row() + k;
-                    // The row decoded at once (eight one-byte gaps at a time), then tested.
-                    let mut listed = c.row(k);
-                    let len = listed.len();
-                    if row.len() < len {
-                        row.resize(len, 0);
-                    }
-                    listed.fill(&mut row[..len]);
-                    for &j in &row[..len] {
-                        word |= u64::from(keep(i, j)) << (bit % GROUP);
-                        bit += 1;
-                        if bit.is_multiple_of(GROUP) {
-                            words.push(word);
-                            word = 0;
-                        }
-                    }
-                    starts.push(
-                        u32::try_from(bit)
-                            .expect("a chunk of 256 rows lists fewer than 2^32 pairs"),
-                    );
-                }
-                if !bit.is_multiple_of(GROUP) {
-                    words.push(word);
-                }
-                ChunkBits { starts, words }
+        let mut slots: Vec<Option<ChunkBits>> = vec![None; list.chunks().len()];
+        for (c, bits) in picked.into_iter().flat_map(|p| p.0) {
+            assert!(slots[c].is_none(), "a chunk is picked once");
+            slots[c] = Some(bits);
+        }
+        let chunks = slots
+            .into_par_iter()
+            .zip(list.chunks().par_iter())
+            .map(|(slot, c)| {
+                slot.unwrap_or_else(|| {
+                    let mut b = ChunkBuilder::new(c.rows(), c.pairs());
+                    push_rows(c, &mut b, &mut Vec::new(), &keep);
+                    b.finish()
+                })
             })
             .collect();
         PairSelection {
             chunks,
-            len: self.len(),
+            len: list.len(),
         }
     }
 }
@@ -172,6 +352,11 @@ impl<'a> Pairs<'a> {
             list,
             selection: Some(selection),
         }
+    }
+
+    /// The list whose pairs these are (every listed pair, selected or not).
+    pub fn list(&self) -> &'a NeighborList {
+        self.list
     }
 
     /// Number of particles (rows).
@@ -330,6 +515,46 @@ mod tests {
                 proptest::prop_assert_eq!(Pairs::all(&list).row(i, &mut scratch), &r[..]);
                 proptest::prop_assert_eq!(pairs.count(i), want.len());
             }
+        }
+
+        /// Rows shared out among pickers in ascending runs (some rows skipped, some
+        /// chunks left to `assemble`): each row handed back is its accepted pairs, and
+        /// the assembled selection is `select_pairs`'s, bit for bit.
+        #[test]
+        fn pickers_assemble_the_selection(
+            sets in proptest::collection::vec(
+                proptest::collection::btree_set(0u32..5_000, 0..200),
+                0..900,
+            ),
+            cuts in proptest::collection::btree_set(0usize..900, 0..6),
+            skip in proptest::collection::btree_set(0usize..900, 0..40),
+            salt in 0usize..1_000,
+        ) {
+            let rows: Vec<Vec<u32>> = sets.into_iter().map(|s| s.into_iter().collect()).collect();
+            let n = rows.len();
+            let list = NeighborList::from_rows(rows.clone());
+            let keep = |i: usize, j: u32| (i * 7 + j as usize * 13 + salt) % 11 < 8;
+            // Runs of rows between the cuts, each starting on a chunk's first row (as
+            // the solver's blocks do); every other run is left to `assemble`.
+            let mut starts: Vec<usize> = cuts.into_iter().map(|c| c / CHUNK * CHUNK).collect();
+            starts.insert(0, 0);
+            starts.push(n);
+            starts.dedup();
+            let mut picked = Vec::new();
+            let mut out = Vec::new();
+            for (k, w) in starts.windows(2).enumerate() {
+                if k % 2 == 1 {
+                    continue;
+                }
+                let mut picker = list.picker();
+                for i in (w[0]..w[1].min(n)).filter(|i| !skip.contains(i)) {
+                    let want: Vec<u32> = rows[i].iter().copied().filter(|&j| keep(i, j)).collect();
+                    proptest::prop_assert_eq!(picker.row(i, &keep, &mut out), &want[..]);
+                }
+                picked.push(picker.finish(&keep));
+            }
+            let assembled = PairSelection::assemble(&list, picked, keep);
+            proptest::prop_assert_eq!(&assembled, &list.select_pairs(keep));
         }
     }
 }

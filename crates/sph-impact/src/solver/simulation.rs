@@ -26,14 +26,14 @@ use crate::solver::pair_kernel::{
 };
 use crate::solver::pair_rules::{NoPairRule, PairRule};
 use crate::solver::ranks::{self, OneRank, Ranks};
-use crate::solver::state::{Extended, Ghosts, PlacedGhost, RealColumns, State};
+use crate::solver::state::{Extended, Ghosts, PairProbe, PlacedGhost, RealColumns, State};
 use crate::solver::timestep::{TimestepVote, acceleration_vote, cfl_vote, density_vote};
 use crate::solver::warm_threads::KeepAwake;
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 use sph_core::{
-    CellList, Dimension, NeighborList, Pairs, Particles, Permutation, ScalarSupport, Tensor,
-    TensorSupport, Vector,
+    CellList, Dimension, NeighborList, PairSelection, Pairs, Particles, Permutation, ScalarSupport,
+    Tensor, TensorSupport, Vector,
 };
 use sph_damage::DamageForm;
 use sph_kernel::Kernel;
@@ -72,7 +72,9 @@ fn chunks_or_none<T: Send>(
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
 pub struct PhaseTimes {
     /// The neighbour search (`CellList::neighbors`) and, with a Verlet list, each stage's
-    /// test of whether the kept list still holds and its picking of the stage's pairs.
+    /// test of whether the kept list still holds and, where pass 1 does not pick them as
+    /// it reads the rows (counted in [`Self::gradients`] then), its picking of the
+    /// stage's pairs.
     pub neighbours: f64,
     /// The pair arrays around it: supports, ghosts, RZ radii, summation density and
     /// artificial stresses.
@@ -81,7 +83,8 @@ pub struct PhaseTimes {
     /// The per-particle terms before the pairs: the equation of state, damage, damaged
     /// pressures, shear moduli, signal speeds and adhesion flags (one pass).
     pub eos: f64,
-    /// Gradient pass.
+    /// Gradient pass (pass 1), with a Verlet list in one process its picking of the
+    /// stage's pairs too.
     pub gradients: f64,
     /// Pair loop (rates).
     pub pairs: f64,

@@ -3,7 +3,9 @@
 
 use super::*;
 use crate::solver::chunks::{chunks_or_none, rows_or_empty};
+use crate::solver::state::PairProbe;
 use crate::solver::warm_threads::for_each_awake;
+use sph_core::PickedRows;
 
 /// Per-particle gradients (pass 1).
 #[derive(Clone, Copy, Debug)]
@@ -128,20 +130,26 @@ impl<D: Dimension> PairGradients<D> {
 
 /// Pass 1 over the blocks of rows `blocks` (of `rows` rows each; all of them in a single
 /// process). With `generic` the loop that reads the options runs even where they are
-/// the study's.
+/// the study's. With `pick`, `list` holds every listed pair of a Verlet list and pass 1
+/// picks the stage's pairs from it as it reads each row (`probe`'s test, as
+/// `NeighborList::select_pairs` would pick them), handing back each block's picked rows
+/// for [`sph_core::PairSelection::assemble`].
 pub(crate) fn gradients<D: Dimension, P: PairKernel<D>>(
     ext: &Extended<'_, D>,
     list: Pairs<'_>,
     pk: &P,
     options: GradientOptions,
     (rows, blocks): (usize, Range<usize>),
-    generic: bool,
-) -> GradientSet<D> {
+    (generic, pick): (bool, Option<&PairProbe<D>>),
+) -> (GradientSet<D>, Vec<PickedRows>) {
     // The study's options as constants of the loop where they are the run's
     // (`GradientOptions::STUDY`, as pair_scheme.rs does for pass 2) unless `generic`
     // asks for the loop that reads them; the same arithmetic either way.
     let study = !generic && options.is_study(ext);
-    per_case!(gradients_in(ext, list, pk, options, rows, blocks), study)
+    per_case!(
+        gradients_in(ext, list, pk, options, rows, blocks, pick),
+        study
+    )
 }
 
 /// [`gradients`] for one geometry (`RZ`) and, with `STUDY`, the study's options
@@ -154,7 +162,8 @@ fn gradients_in<D: Dimension, P: PairKernel<D>, const RZ: bool, const STUDY: boo
     options: GradientOptions,
     rows: usize,
     blocks: Range<usize>,
-) -> GradientSet<D> {
+    pick: Option<&PairProbe<D>>,
+) -> (GradientSet<D>, Vec<PickedRows>) {
     let GradientOptions {
         correct,
         correct_strain,
@@ -271,7 +280,8 @@ fn gradients_in<D: Dimension, P: PairKernel<D>, const RZ: bool, const STUDY: boo
     let fill = |b: usize,
                 out: &mut [Gradients<D>],
                 mut corr: Option<&mut [D::Tensor]>,
-                mut grad_e: Option<&mut [D::Vector]>| {
+                mut grad_e: Option<&mut [D::Vector]>|
+     -> Option<PickedRows> {
         let (start, end) = (b * rows, b * rows + out.len());
         let mut sums: Vec<Sums<D>> = (start..end)
             .map(|i| Sums {
@@ -298,8 +308,16 @@ fn gradients_in<D: Dimension, P: PairKernel<D>, const RZ: bool, const STUDY: boo
             },
         );
         let mut scratch = Vec::new();
+        // The stage's pairs picked from the Verlet list here, where the row is decoded
+        // and the partners' data read anyway (solver/simulation/verlet.rs).
+        let keep = |i: usize, j: u32| pick.is_some_and(|p| p.interacts(i, j as usize));
+        let mut picker = pick.map(|_| list.list().picker());
         for i in start..end {
-            for &j in list.row(i, &mut scratch) {
+            let row = match picker.as_mut() {
+                Some(picker) => picker.row(i, &keep, &mut scratch),
+                None => list.row(i, &mut scratch),
+            };
+            for &j in row {
                 let j = j as usize;
                 match pair_blocks::visit(i, j, start, end) {
                     pair_blocks::Visit::Done => {}
@@ -321,6 +339,7 @@ fn gradients_in<D: Dimension, P: PairKernel<D>, const RZ: bool, const STUDY: boo
                 grad_e[k] = ge;
             }
         }
+        picker.map(|p| p.finish(&keep))
     };
     let unset = Gradients {
         velocity: D::Tensor::ZERO,
@@ -347,15 +366,24 @@ fn gradients_in<D: Dimension, P: PairKernel<D>, const RZ: bool, const STUDY: boo
     // The blocks to the threads one task each: a task of several blocks left the other
     // thread idle at the end of the pass where blocks are few (RZ: 26); and the thread
     // that finishes first does not sleep while the last blocks run (warm_threads.rs).
-    let tasks = each[own].par_chunks_mut(rows).zip(corr).zip(ge).enumerate();
-    for_each_awake(tasks, |(b, ((out, corr), ge))| {
-        fill(blocks.start + b, out, corr, ge)
+    let mut picked: Vec<Option<PickedRows>> = (0..n_blocks).map(|_| None).collect();
+    let tasks = each[own]
+        .par_chunks_mut(rows)
+        .zip(corr)
+        .zip(ge)
+        .zip(picked.par_iter_mut())
+        .enumerate();
+    for_each_awake(tasks, |(b, (((out, corr), ge), picked))| {
+        *picked = fill(blocks.start + b, out, corr, ge)
     });
-    GradientSet {
-        each,
-        correction,
-        energy: grad_e,
-    }
+    (
+        GradientSet {
+            each,
+            correction,
+            energy: grad_e,
+        },
+        picked.into_iter().flatten().collect(),
+    )
 }
 
 /// M⁻¹ if M is invertible and not too far from the identity (condition number of its

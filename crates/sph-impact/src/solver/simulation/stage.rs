@@ -40,11 +40,24 @@ impl<D: Dimension> Topology<D> {
     }
 }
 
+/// What the pair passes give a stage ([`Simulation::pair_passes`]).
+struct PassesOut<D: Dimension> {
+    grads: Option<GradientSet<D>>,
+    rates: PairRates<D>,
+    /// The instant pass 2 began.
+    pass_2: Instant,
+    /// The seconds of the gathers after pass 1 and after pass 2.
+    exchange: [f64; 2],
+    /// The stage's pairs of a Verlet list when pass 1 picked them.
+    selection: Option<PairSelection>,
+}
+
 impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
     /// Pass 1 (when `options` asks for it) and pass 2 with the pair kernel `pk`, their
     /// blocks of rows shared out among `ranks` as `shares` gives them (solver/ranks.rs),
-    /// each gathered by all; the instant pass 2 began, and the seconds of the gathers
-    /// after pass 1 and pass 2.
+    /// each gathered by all. With `pick` (one process, and pass 1 asked for), `list` is
+    /// a Verlet list's every listed pair and pass 1 picks the stage's pairs from it with
+    /// the probe's test, for pass 2 and the caller.
     fn pair_passes<P: PairKernel<D>>(
         &self,
         ext: &Extended<'_, D>,
@@ -52,8 +65,8 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
         pk: &P,
         options: Option<GradientOptions>,
         (rows, shares): (usize, &[Range<usize>]),
-        ranks: &dyn Ranks,
-    ) -> (Option<GradientSet<D>>, PairRates<D>, Instant, [f64; 2]) {
+        (ranks, pick): (&dyn Ranks, Option<PairProbe<D>>),
+    ) -> PassesOut<D> {
         let n = ext.n_real;
         let size = ranks.size();
         let mine = shares[ranks.rank()].clone();
@@ -61,16 +74,30 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
             .iter()
             .map(|b| pair_blocks::rows_of(b, rows, n))
             .collect();
-        let mut g = options.map(|o| {
-            gradients(
-                ext,
-                list,
-                pk,
-                o,
-                (rows, mine.clone()),
-                self.generic_pair_loop,
-            )
+        let (mut g, picked) = match options {
+            Some(o) => {
+                let (g, picked) = gradients(
+                    ext,
+                    list,
+                    pk,
+                    o,
+                    (rows, mine.clone()),
+                    (self.generic_pair_loop, pick.as_ref()),
+                );
+                (Some(g), picked)
+            }
+            None => (None, Vec::new()),
+        };
+        // The stage's pairs of a Verlet list, as pass 1 picked them (`pick`; the rows
+        // of no block, the ghosts', picked here by the same test). The probe is freed
+        // here, before pass 2 and the stage's memory peak.
+        let selection = pick.map(|probe| {
+            PairSelection::assemble(list.list(), picked, |i, j| probe.interacts(i, j as usize))
         });
+        let list = match &selection {
+            Some(s) => Pairs::selected(list.list(), s),
+            None => list,
+        };
         let t = Instant::now();
         if size > 1
             && let Some(g) = &mut g
@@ -141,7 +168,13 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
             }
             r.boundary = ranks::gather_list(ranks, &r.boundary);
         }
-        (g, r, t3, [exchange_gradients, t.elapsed().as_secs_f64()])
+        PassesOut {
+            grads: g,
+            rates: r,
+            pass_2: t3,
+            exchange: [exchange_gradients, t.elapsed().as_secs_f64()],
+            selection,
+        }
     }
 
     /// Each of `size` ranks' blocks of the pair passes (of `rows` rows, over `n` real
@@ -373,28 +406,48 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
                 (list, shares, built)
             }
         };
+        let need_grads = self.scheme.limiter != sph_riemann::Limiter::None
+            || !state.h_tensor.is_empty()
+            || self.scheme.gradient_correction
+            || self.scheme.momentum_correction
+            || self.scheme.grad_h
+            || self.scheme.viscosity.switch != sph_riemann::ViscositySwitch::None
+            || self.scheme.energy_diffusion > 0.0
+            || !state.stress.is_empty();
         // A Verlet list's pairs of this stage, picked for the passes (simulation/verlet.rs);
-        // the list itself is kept as searched.
-        let picked = ext.skin.then(|| {
-            let probe = ext.pair_probe();
-            list.select_pairs(|i, j| probe.interacts(i, j as usize))
-        });
+        // the list itself is kept as searched. In one process pass 1 picks them as it
+        // reads the rows (`pair_passes`), unless the summation density reads them first.
+        let pick_in_pass_1 =
+            size == 1 && need_grads && self.scheme.density != DensityForm::Summation;
+        let (picked, probe) = match ext.skin.then(|| ext.pair_probe()) {
+            Some(probe) if !pick_in_pass_1 => (
+                Some(list.select_pairs(|i, j| probe.interacts(i, j as usize))),
+                None,
+            ),
+            probe => (None, probe),
+        };
+        let pick_in_pass_1 = probe.is_some();
         let pairs = match &picked {
             Some(selection) => Pairs::selected(&list, selection),
             None => Pairs::all(&list),
         };
         let search = t_search.elapsed().as_secs_f64();
         // The neighbours listed for the real particles (on several ranks from the blocks'
-        // costs, since each rank's list holds its own rows only).
-        let entries = if size > 1 {
-            self.block_costs.iter().sum::<u64>() - n_real as u64
-        } else {
-            // In parallel: an integer sum, the same in any order.
+        // costs, since each rank's list holds its own rows only), in parallel: an
+        // integer sum, the same in any order.
+        let count = |pairs: Pairs<'_>| {
             (0..n_real)
                 .into_par_iter()
                 .with_min_len(1024)
                 .map(|i| pairs.count(i) as u64)
                 .sum::<u64>()
+        };
+        let mut entries = if size > 1 {
+            self.block_costs.iter().sum::<u64>() - n_real as u64
+        } else if pick_in_pass_1 {
+            0 // counted once pass 1 has picked them, below
+        } else {
+            count(pairs)
         };
         if self.scheme.density == DensityForm::Summation {
             // Density from the positions, then the EOS again with it (real and ghosts).
@@ -441,14 +494,6 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
                 artificial_stresses(&ext, &self.scheme.artificial_stress, rz);
         }
         let t2 = Instant::now();
-        let need_grads = self.scheme.limiter != sph_riemann::Limiter::None
-            || !state.h_tensor.is_empty()
-            || self.scheme.gradient_correction
-            || self.scheme.momentum_correction
-            || self.scheme.grad_h
-            || self.scheme.viscosity.switch != sph_riemann::ViscositySwitch::None
-            || self.scheme.energy_diffusion > 0.0
-            || !state.stress.is_empty();
         let options = GradientOptions {
             correct: self.scheme.gradient_correction,
             correct_strain: self.scheme.strain_rate_correction && !state.stress.is_empty(),
@@ -456,20 +501,31 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
             grad_h: self.scheme.grad_h,
         };
         let (options, blocks) = (need_grads.then_some(options), (rows, shares.as_slice()));
-        let (grads, rates_out, t3, exchange) = if ext.h_tensor.is_empty() {
+        let pick = (ranks, probe);
+        let passes = if ext.h_tensor.is_empty() {
             let pk = ScalarPairKernel::new(self.kernel, &ext.h, D::DIM);
-            self.pair_passes(&ext, pairs, &pk, options, blocks, ranks)
+            self.pair_passes(&ext, pairs, &pk, options, blocks, pick)
         } else {
             let pk = TensorPairKernel {
                 kernel: self.kernel,
                 h_tensor: &ext.h_tensor,
                 h: &ext.h,
             };
-            self.pair_passes(&ext, pairs, &pk, options, blocks, ranks)
+            self.pair_passes(&ext, pairs, &pk, options, blocks, pick)
         };
+        let PassesOut {
+            grads,
+            rates: rates_out,
+            pass_2: t3,
+            exchange,
+            selection,
+        } = passes;
+        if let Some(s) = &selection {
+            entries = count(Pairs::selected(&list, s));
+        }
         // The pairs are spent: free this stage's selection and the columns only the
         // passes read before the damage rates allocate theirs.
-        drop(picked);
+        drop((picked, selection));
         ext.release_pair_columns()
             .put_back(&mut state.particles, n_real);
         let PairRates {

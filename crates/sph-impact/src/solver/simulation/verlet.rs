@@ -26,8 +26,9 @@
 //!
 //! Each test is applied with a margin of 10⁻⁹ of the reach, far beyond the rounding of
 //! the distances it bounds. Each stage then picks from the list the pairs a search of its
-//! present supports would list, between live particles (`Extended::pair_probe`,
-//! `NeighborList::select_pairs`, one bit per listed pair), each row in its order, so the
+//! present supports would list, between live particles (`Extended::pair_probe`; one bit
+//! per listed pair, set by pass 1 as it reads each row in one process, else by
+//! `NeighborList::select_pairs`; simulation/stage.rs), each row in its order, so the
 //! passes sum the same terms in the same order as after a search of the stage's own:
 //! when the list is rebuilt does not change the results, only how many searches they
 //! take.
