@@ -88,9 +88,11 @@ impl PairSelection {
 
 /// The selection bits of one chunk as its rows are tested, in order.
 struct ChunkBuilder {
+    /// The finished words, and each tested row's first bit.
     bits: ChunkBits,
-    /// The bits of the word being filled, and the chunk's bits so far.
+    /// The word being filled.
     word: u64,
+    /// The chunk's bits so far.
     bit: usize,
 }
 
@@ -161,14 +163,15 @@ impl ChunkBuilder {
     }
 }
 
-/// Tests the rows `from..` of chunk `c` into `b`, each decoded into `row`.
+/// Tests the rows of chunk `c` that `b` has not tested, up to row `end` of the chunk
+/// (not included), each decoded into `row`.
 fn push_rows<F: Fn(usize, u32) -> bool>(
     c: &super::list::Chunk,
     b: &mut ChunkBuilder,
-    row: &mut Vec<u32>,
+    (row, end): (&mut Vec<u32>, usize),
     keep: &F,
 ) {
-    for k in b.rows()..c.rows() {
+    for k in b.rows()..end {
         let len = decode(c, k, row);
         b.push_row(c.first_row() + k, &row[..len], keep);
     }
@@ -252,10 +255,7 @@ impl RowPicker<'_> {
         debug_assert_eq!(*open, c);
         let k = i % CHUNK;
         assert!(b.rows() <= k, "rows are picked in ascending order");
-        for skipped in b.rows()..k {
-            let len = decode(chunk, skipped, &mut self.row);
-            b.push_row(chunk.first_row() + skipped, &self.row[..len], keep);
-        }
+        push_rows(chunk, b, (&mut self.row, k), keep);
         let len = decode(chunk, k, &mut self.row);
         if out.len() < len {
             out.resize(len, 0);
@@ -273,7 +273,8 @@ impl RowPicker<'_> {
     /// Closes the open chunk, testing its rows not yet asked for.
     fn close<F: Fn(usize, u32) -> bool>(&mut self, keep: &F) {
         if let Some((c, mut b)) = self.open.take() {
-            push_rows(&self.list.chunks()[c], &mut b, &mut self.row, keep);
+            let chunk = &self.list.chunks()[c];
+            push_rows(chunk, &mut b, (&mut self.row, chunk.rows()), keep);
             self.done.push((c, b.finish()));
         }
     }
@@ -308,7 +309,7 @@ impl PairSelection {
             .map(|(slot, c)| {
                 slot.unwrap_or_else(|| {
                     let mut b = ChunkBuilder::new(c.rows(), c.pairs());
-                    push_rows(c, &mut b, &mut Vec::new(), &keep);
+                    push_rows(c, &mut b, (&mut Vec::new(), c.rows()), &keep);
                     b.finish()
                 })
             })

@@ -310,11 +310,13 @@ fn gradients_in<D: Dimension, P: PairKernel<D>, const RZ: bool, const STUDY: boo
         let mut scratch = Vec::new();
         // The stage's pairs picked from the Verlet list here, where the row is decoded
         // and the partners' data read anyway (solver/simulation/verlet.rs).
-        let keep = |i: usize, j: u32| pick.is_some_and(|p| p.interacts(i, j as usize));
-        let mut picker = pick.map(|_| list.list().picker());
+        let mut picker = pick.map(|probe| {
+            let keep = move |i: usize, j: u32| probe.interacts(i, j as usize);
+            (list.list().picker(), keep)
+        });
         for i in start..end {
             let row = match picker.as_mut() {
-                Some(picker) => picker.row(i, &keep, &mut scratch),
+                Some((picker, keep)) => picker.row(i, keep, &mut scratch),
                 None => list.row(i, &mut scratch),
             };
             for &j in row {
@@ -339,7 +341,7 @@ fn gradients_in<D: Dimension, P: PairKernel<D>, const RZ: bool, const STUDY: boo
                 grad_e[k] = ge;
             }
         }
-        picker.map(|p| p.finish(&keep))
+        picker.map(|(picker, keep)| picker.finish(&keep))
     };
     let unset = Gradients {
         velocity: D::Tensor::ZERO,

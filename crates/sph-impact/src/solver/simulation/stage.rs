@@ -417,16 +417,15 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
         // A Verlet list's pairs of this stage, picked for the passes (simulation/verlet.rs);
         // the list itself is kept as searched. In one process pass 1 picks them as it
         // reads the rows (`pair_passes`), unless the summation density reads them first.
-        let pick_in_pass_1 =
-            size == 1 && need_grads && self.scheme.density != DensityForm::Summation;
+        let pass_1_picks = size == 1 && need_grads && self.scheme.density != DensityForm::Summation;
+        // `probe`: the test pass 1 is to pick the pairs with, if it does.
         let (picked, probe) = match ext.skin.then(|| ext.pair_probe()) {
-            Some(probe) if !pick_in_pass_1 => (
+            Some(probe) if !pass_1_picks => (
                 Some(list.select_pairs(|i, j| probe.interacts(i, j as usize))),
                 None,
             ),
             probe => (None, probe),
         };
-        let pick_in_pass_1 = probe.is_some();
         let pairs = match &picked {
             Some(selection) => Pairs::selected(&list, selection),
             None => Pairs::all(&list),
@@ -444,7 +443,7 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
         };
         let mut entries = if size > 1 {
             self.block_costs.iter().sum::<u64>() - n_real as u64
-        } else if pick_in_pass_1 {
+        } else if probe.is_some() {
             0 // counted once pass 1 has picked them, below
         } else {
             count(pairs)
