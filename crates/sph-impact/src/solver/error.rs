@@ -9,6 +9,9 @@ pub enum SolverError {
     /// ([`crate::Simulation::restore`]).
     #[error("the checkpoint does not fit this set-up: {0}")]
     BadCheckpoint(String),
+    /// The ranks' exchange of particles failed (solver/ranks/local.rs): what went wrong.
+    #[error("rank exchange: {0}")]
+    Exchange(String),
     /// A scheme setting out of range.
     #[error("scheme setting {field} = {}: {reason}", crate::scene::shown_value(*value))]
     BadConfig {

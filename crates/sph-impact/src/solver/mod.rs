@@ -29,7 +29,7 @@ pub use error::SolverError;
 pub use material::Material;
 pub use pair_blocks::{PairEvaluations, pair_evaluations};
 pub use pair_rules::{NoPairRule, PairRule, PairView};
-pub use ranks::{Gathered, OneRank, Ranks, shares};
+pub use ranks::{Gathered, LocalState, OneRank, Ranks, exchange_halo, shares};
 pub use simulation::{Conserved, PhaseTimes, Simulation, SolverCheckpoint, StepInfo};
 pub use state::State;
 pub use timestep::TimestepVote;

@@ -18,7 +18,9 @@ use sph_core::{Dimension, Tensor, Vector};
 use std::ops::Range;
 
 mod halo;
+mod local;
 pub(crate) use halo::{Halo, rows_read};
+pub use local::{LocalState, exchange_halo};
 
 /// The ranks of a run, as the solver sees them: who this is, how many there are, and the
 /// two collectives it needs. Implemented over MPI by the program (`mpi` feature) and by

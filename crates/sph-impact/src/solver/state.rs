@@ -202,6 +202,29 @@ impl<D: Dimension> State<D> {
         out
     }
 
+    /// A copy of the particles with `keep[i]` true (same time and step), in order; `self`
+    /// is left as it is (the walk over the fields takes it mutably).
+    pub(crate) fn copy_rows(&mut self, keep: &[bool]) -> State<D> {
+        struct CopyRows<'k>(&'k [bool]);
+        impl FieldOp for CopyRows<'_> {
+            fn apply<T: Clone>(&mut self, a: &mut Vec<T>, b: &mut Vec<T>) {
+                *b = a
+                    .iter()
+                    .zip(self.0)
+                    .filter(|(_, keep)| **keep)
+                    .map(|(x, _)| x.clone())
+                    .collect();
+            }
+        }
+        let mut out = State {
+            time: self.time,
+            step: self.step,
+            ..State::default()
+        };
+        Self::zip_fields(self, &mut out, &mut CopyRows(keep));
+        out
+    }
+
     /// Appends the particles of `other` (a state [`Self::split_off`] made from this one,
     /// so the same fields are in use) after `self`'s.
     pub(crate) fn append(&mut self, other: &mut State<D>) {

@@ -1,0 +1,409 @@
+//! A rank's own particles and copies of its halo: the state's exchange that a
+//! decomposition distributing the particles needs before each search (docs/mpi.md,
+//! "Distributed particles: the design"). Not yet used by the run, which replicates the
+//! state on every rank.
+//!
+//! Each rank owns a contiguous range of the global (Morton) order. It describes its rows
+//! by boxes (`sph_core::regions_of_rows`) and every rank receives every rank's boxes; the
+//! owner of a particle then sends it, with every field it owns, to each rank one of whose
+//! boxes it may pair with (`sph_core::Region::may_pair`: closer than the larger of the two
+//! reaches). A particle's images across the boundaries count as it does: the ghosts a
+//! rank places from its own and halo particles must include those a single process places
+//! for its rows, so a particle is sent where one of its images reaches a box. The images
+//! are chained over the boundaries in their order, as the extended arrays place them
+//! (a corner's ghost is a ghost's ghost, solver/state.rs). The received particles keep
+//! their owners' order and the ranks' ranges ascend, so the local state is in global
+//! order: every own row lists its partners in the order a single process does.
+
+use super::Ranks;
+use crate::solver::boundary::{Boundary, Ghost};
+use crate::solver::{SolverError, State};
+use sph_core::{Dimension, Region, ScalarSupport, Vector, regions_of_rows};
+use std::ops::Range;
+
+/// Each region box at most this many of its particles' largest reach across, as the
+/// partial search's boxes are (sph-core `HALO_REGION_SIZE`).
+const REGION_SIZE: f64 = 4.0;
+
+/// A rank's particles for a distributed run: its own, and copies of the other ranks'
+/// particles that may pair with them or whose images may (its halo), in global order.
+#[derive(Clone, Debug)]
+pub struct LocalState<D: Dimension> {
+    /// The particles with every field they own: the halo below the rank's range, its own
+    /// rows, the halo above.
+    pub state: State<D>,
+    /// Each particle's row in the global order, ascending.
+    pub global: Vec<u64>,
+    /// The rows of `state` that are the rank's own.
+    pub own: Range<usize>,
+}
+
+/// Every rank calls this with its own particles `own` (rows `first..first + n` of the
+/// global order, the ranks' ranges ascending with the rank), each particle's reach
+/// (its support radius, with a Verlet list's skin where the halo is to last while the
+/// list holds) and the run's boundaries (the RZ axis among them); each gets its
+/// [`LocalState`]. Two collectives: an all-gather of the boxes and an exchange of the
+/// particles.
+pub fn exchange_halo<D: Dimension>(
+    ranks: &dyn Ranks,
+    own: &State<D>,
+    first: u64,
+    reach: &[f64],
+    boundaries: &[Boundary<D>],
+) -> Result<LocalState<D>, SolverError> {
+    let n = own.particles.len();
+    if reach.len() != n {
+        return Err(SolverError::Exchange(format!(
+            "{} reaches for {n} particles",
+            reach.len()
+        )));
+    }
+    let positions = &own.particles.position;
+    let core = |e: sph_core::CoreError| SolverError::Exchange(e.to_string());
+    let support = ScalarSupport::new(reach).map_err(core)?;
+    let regions = regions_of_rows(positions, &support, 0..n, REGION_SIZE).map_err(core)?;
+    let all = ranks.all_gather(put_regions(&regions));
+    let (me, size) = (ranks.rank(), ranks.size());
+    // Each particle's position and its images, once, for the tests against every rank.
+    let images: Vec<Vec<D::Vector>> = positions
+        .iter()
+        .zip(reach)
+        .map(|(&x, &r)| images_of(x, r, boundaries))
+        .collect();
+    // The own rows, which the local state holds too; each message copies some of them.
+    let mut copy = own.clone();
+    let mut messages = Vec::with_capacity(size);
+    for k in 0..size {
+        if k == me {
+            messages.push(Vec::new());
+            continue;
+        }
+        let theirs = get_regions::<D::Vector>(all.part(k));
+        let send: Vec<bool> = images
+            .iter()
+            .zip(reach)
+            .map(|(points, &r)| {
+                points
+                    .iter()
+                    .any(|&x| theirs.iter().any(|b| b.may_pair(x, r)))
+            })
+            .collect();
+        let rows: Vec<u64> = (first..first + n as u64)
+            .zip(&send)
+            .filter_map(|(g, &s)| s.then_some(g))
+            .collect();
+        messages.push(encode(&copy.copy_rows(&send), &rows)?);
+    }
+    let received = ranks.exchange(messages);
+    let mut state = State {
+        time: own.time,
+        step: own.step,
+        ..State::default()
+    };
+    let (mut global, mut own_rows) = (Vec::new(), 0..0);
+    for (k, message) in received.into_iter().enumerate() {
+        if k == me {
+            own_rows = global.len()..global.len() + n;
+            state.append(&mut copy);
+            global.extend(first..first + n as u64);
+        } else {
+            let (mut part, rows) = decode::<D>(&message, k)?;
+            state.append(&mut part);
+            global.extend(rows);
+        }
+    }
+    if !global.windows(2).all(|w| w[0] < w[1]) {
+        return Err(SolverError::Exchange(
+            "the ranks' ranges of the global order do not ascend with the rank".into(),
+        ));
+    }
+    Ok(LocalState {
+        state,
+        global,
+        own: own_rows,
+    })
+}
+
+/// `x` and its images across `boundaries` within `reach`, chained in the boundaries'
+/// order as the extended arrays place ghosts (a later boundary images the earlier
+/// images too).
+fn images_of<D: Dimension>(x: D::Vector, reach: f64, boundaries: &[Boundary<D>]) -> Vec<D::Vector> {
+    let mut points = vec![x];
+    let mut made: Vec<Ghost<D>> = Vec::new();
+    for b in boundaries {
+        made.clear();
+        for &p in &points {
+            b.ghosts_within(0, p, reach, &mut made);
+        }
+        points.extend(made.iter().map(|g| g.position));
+    }
+    points
+}
+
+/// The boxes as f64s: per box its lower and upper corners and its reach.
+fn put_regions<V: Vector>(regions: &[Region<V>]) -> Vec<f64> {
+    let mut out = Vec::with_capacity(regions.len() * (2 * V::DIM + 1));
+    for b in regions {
+        out.extend((0..V::DIM).map(|k| b.lo.component(k)));
+        out.extend((0..V::DIM).map(|k| b.hi.component(k)));
+        out.push(b.reach);
+    }
+    out
+}
+
+/// The boxes [`put_regions`] wrote.
+fn get_regions<V: Vector>(v: &[f64]) -> Vec<Region<V>> {
+    v.chunks_exact(2 * V::DIM + 1)
+        .map(|c| Region {
+            lo: V::from_fn(|k| c[k]),
+            hi: V::from_fn(|k| c[V::DIM + k]),
+            reach: c[2 * V::DIM],
+        })
+        .collect()
+}
+
+/// A message of particles: their count, their global rows, then their state in CBOR,
+/// its length in bytes and the bytes eight to an f64 (bit patterns, not values).
+fn encode<D: Dimension>(part: &State<D>, rows: &[u64]) -> Result<Vec<f64>, SolverError> {
+    let mut bytes = Vec::new();
+    ciborium::into_writer(part, &mut bytes)
+        .map_err(|e| SolverError::Exchange(format!("cannot encode the particles: {e}")))?;
+    let mut out = Vec::with_capacity(2 + rows.len() + bytes.len() / 8 + 1);
+    out.push(f64::from_bits(rows.len() as u64));
+    out.extend(rows.iter().map(|&g| f64::from_bits(g)));
+    out.push(f64::from_bits(bytes.len() as u64));
+    out.extend(bytes.chunks(8).map(|c| {
+        let mut word = [0u8; 8];
+        word[..c.len()].copy_from_slice(c);
+        f64::from_bits(u64::from_le_bytes(word))
+    }));
+    Ok(out)
+}
+
+/// The particles and global rows of a message [`encode`] wrote, from rank `from`.
+fn decode<D: Dimension>(message: &[f64], from: usize) -> Result<(State<D>, Vec<u64>), SolverError> {
+    let bad = |what: &str| SolverError::Exchange(format!("message from rank {from}: {what}"));
+    let word = |k: usize| {
+        message
+            .get(k)
+            .map(|x| x.to_bits())
+            .ok_or_else(|| bad("cut short"))
+    };
+    let count = word(0)? as usize;
+    let rows: Vec<u64> = (1..=count).map(word).collect::<Result<_, _>>()?;
+    let length = word(count + 1)? as usize;
+    let words = message.get(count + 2..).ok_or_else(|| bad("cut short"))?;
+    let bytes: Vec<u8> = words
+        .iter()
+        .flat_map(|x| x.to_bits().to_le_bytes())
+        .collect();
+    let bytes = bytes.get(..length).ok_or_else(|| bad("cut short"))?;
+    let state: State<D> =
+        ciborium::from_reader(bytes).map_err(|e| bad(&format!("cannot decode ({e})")))?;
+    if state.particles.len() != rows.len() {
+        return Err(bad("particle count differs from its rows'"));
+    }
+    Ok((state, rows))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::solver::Gathered;
+    use sph_core::Particles;
+    use sph_core::dimension::Dim3;
+    use sph_core::glam::{DMat3, DVec3};
+    use std::sync::{Barrier, Mutex};
+
+    /// Ranks as the threads of a test: every call is a collective, so each round posts
+    /// its part, waits for all, reads, and waits again before the next round posts.
+    struct Threads<'a> {
+        rank: usize,
+        size: usize,
+        posted: &'a Mutex<Vec<Vec<f64>>>,
+        all_here: &'a Barrier,
+    }
+
+    impl Ranks for Threads<'_> {
+        fn rank(&self) -> usize {
+            self.rank
+        }
+        fn size(&self) -> usize {
+            self.size
+        }
+        fn all_gather(&self, own: Vec<f64>) -> Gathered {
+            self.posted.lock().unwrap()[self.rank] = own;
+            self.all_here.wait();
+            let parts = self.posted.lock().unwrap().clone();
+            self.all_here.wait();
+            Gathered {
+                lengths: parts.iter().map(Vec::len).collect(),
+                values: parts.concat(),
+            }
+        }
+        fn broadcast(&self, _: Vec<u8>) -> Vec<u8> {
+            unreachable!("the halo exchange does not broadcast")
+        }
+    }
+
+    /// A cloud of `n` particles in the unit cube with supports over two octaves, with the
+    /// stress and damage in use so that every field kind travels: sorted along x
+    /// (`slabs`), so that a rank's rows are a slab and its halo a layer, or in a fixed
+    /// pseudo-random order, which spreads every rank over the whole cube (the rule must
+    /// not depend on the order).
+    fn cloud(n: usize, slabs: bool) -> State<Dim3> {
+        let mut seed = 0x2545_f491_4f6c_dd1d_u64;
+        let mut next = move || {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            (seed >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let mut position: Vec<DVec3> = (0..n).map(|_| DVec3::new(next(), next(), next())).collect();
+        if slabs {
+            position.sort_by(|a, b| a.x.total_cmp(&b.x));
+        }
+        let smoothing_length: Vec<f64> = (0..n).map(|_| 0.04 * 4f64.powf(next())).collect();
+        let particles = Particles {
+            velocity: position.iter().map(|x| *x * 10.0).collect(),
+            mass: vec![1e-3; n],
+            density: (0..n).map(|i| 2700.0 + i as f64).collect(),
+            specific_energy: vec![1e4; n],
+            material: vec![0; n],
+            id: (0..n as u64).collect(),
+            position,
+            smoothing_length,
+        };
+        State {
+            stress: (0..n)
+                .map(|i| DMat3::from_diagonal(DVec3::splat(i as f64)))
+                .collect(),
+            damage_state: (0..n).map(|i| i as f64 / n as f64).collect(),
+            particles,
+            ..State::default()
+        }
+    }
+
+    /// The positions (as bits) of every partner of each row `rows` among `positions` and
+    /// their ghosts, placed as the extended arrays place them (each boundary in turn
+    /// images every position so far, its own earlier images included), with the search's
+    /// criterion |x_i − x_j| < max(h_i, h_j).
+    fn partners(
+        positions: &[DVec3],
+        h: &[f64],
+        boundaries: &[Boundary<Dim3>],
+        rows: Range<usize>,
+    ) -> Vec<Vec<[u64; 3]>> {
+        let (mut x, mut r) = (positions.to_vec(), h.to_vec());
+        let mut made = Vec::new();
+        for b in boundaries {
+            made.clear();
+            b.ghosts(&x, &r, &mut made);
+            for g in &made {
+                x.push(g.position);
+                r.push(r[g.source]);
+            }
+        }
+        rows.map(|i| {
+            let mut found: Vec<[u64; 3]> = (0..x.len())
+                .filter(|&j| j != i && (x[i] - x[j]).length() < h[i].max(r[j]))
+                .map(|j| x[j].to_array().map(f64::to_bits))
+                .collect();
+            found.sort_unstable();
+            found
+        })
+        .collect()
+    }
+
+    /// Each rank's local state, searched alone, gives its rows the partners (real and
+    /// ghosts, by position to the bit) that a search over every particle gives them,
+    /// across a wall, a periodic pair of faces and their corner; and it holds every
+    /// field of its particles as their owners hold them, in global order.
+    #[test]
+    fn a_ranks_local_state_gives_its_rows_the_partners_of_every_particle() {
+        for slabs in [true, false] {
+            check_local_states(&cloud(1500, slabs), slabs);
+        }
+    }
+
+    /// [`a_ranks_local_state_gives_its_rows_the_partners_of_every_particle`] on `whole`.
+    fn check_local_states(whole: &State<Dim3>, slabs: bool) {
+        let boundaries = [
+            Boundary::Wall {
+                point: DVec3::ZERO,
+                normal: DVec3::Z,
+            },
+            Boundary::Periodic {
+                axis: 0,
+                lo: 0.0,
+                hi: 1.0,
+            },
+        ];
+        let p = &whole.particles;
+        let n = p.len();
+        let expected = partners(&p.position, &p.smoothing_length, &boundaries, 0..n);
+        for size in [1, 2, 3, 5] {
+            let posted = Mutex::new(vec![Vec::new(); size]);
+            let all_here = Barrier::new(size);
+            let cuts: Vec<usize> = (0..=size).map(|k| k * n / size).collect();
+            let locals: Vec<LocalState<Dim3>> = std::thread::scope(|scope| {
+                let handles: Vec<_> = (0..size)
+                    .map(|rank| {
+                        let (posted, all_here) = (&posted, &all_here);
+                        let (cuts, boundaries) = (&cuts, &boundaries);
+                        scope.spawn(move || {
+                            let mut all = whole.clone();
+                            let mine: Vec<bool> = (0..n)
+                                .map(|i| (cuts[rank]..cuts[rank + 1]).contains(&i))
+                                .collect();
+                            let own = all.split_off(&mine);
+                            let ranks = Threads {
+                                rank,
+                                size,
+                                posted,
+                                all_here,
+                            };
+                            let h = own.particles.smoothing_length.clone();
+                            exchange_halo(&ranks, &own, cuts[rank] as u64, &h, boundaries).unwrap()
+                        })
+                    })
+                    .collect();
+                handles.into_iter().map(|h| h.join().unwrap()).collect()
+            });
+            for (rank, local) in locals.iter().enumerate() {
+                let q = &local.state.particles;
+                let g: Vec<usize> = local.global.iter().map(|&g| g as usize).collect();
+                assert_eq!(local.own.len(), cuts[rank + 1] - cuts[rank]);
+                assert_eq!(g[local.own.start], cuts[rank]);
+                assert!(g.windows(2).all(|w| w[0] < w[1]), "global order");
+                for (k, &i) in g.iter().enumerate() {
+                    assert_eq!(q.position[k].to_array(), p.position[i].to_array());
+                    assert_eq!(q.velocity[k].to_array(), p.velocity[i].to_array());
+                    assert_eq!(q.id[k], p.id[i]);
+                    assert_eq!(local.state.stress[k], whole.stress[i]);
+                    assert_eq!(local.state.damage_state[k], whole.damage_state[i]);
+                }
+                let found = partners(
+                    &q.position,
+                    &q.smoothing_length,
+                    &boundaries,
+                    local.own.clone(),
+                );
+                for (k, row) in found.iter().enumerate() {
+                    let i = g[local.own.start + k];
+                    assert_eq!(row, &expected[i], "row {i} on rank {rank} of {size}");
+                }
+                let (own, halo) = (local.own.len(), g.len() - local.own.len());
+                println!("{size} ranks, rank {rank}: {own} own, {halo} halo");
+                // In slabs the boxes pick a layer, not every other rank's particle.
+                if slabs && size == 5 {
+                    assert!(
+                        halo < (n - own) / 2,
+                        "rank {rank}: halo {halo} of {}",
+                        n - own
+                    );
+                }
+            }
+        }
+    }
+}
