@@ -225,6 +225,20 @@ impl<D: Dimension> State<D> {
         out
     }
 
+    /// Overwrites the particles `start..start + n` with the `n` of `other` (a state with
+    /// the same fields in use), every field.
+    pub(crate) fn overwrite_rows(&mut self, start: usize, other: &mut State<D>) {
+        struct Overwrite(usize);
+        impl FieldOp for Overwrite {
+            fn apply<T: Clone>(&mut self, a: &mut Vec<T>, b: &mut Vec<T>) {
+                if !b.is_empty() {
+                    a[self.0..self.0 + b.len()].clone_from_slice(b);
+                }
+            }
+        }
+        Self::zip_fields(self, other, &mut Overwrite(start));
+    }
+
     /// Appends the particles of `other` (a state [`Self::split_off`] made from this one,
     /// so the same fields are in use) after `self`'s.
     pub(crate) fn append(&mut self, other: &mut State<D>) {

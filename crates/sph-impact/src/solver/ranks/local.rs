@@ -36,6 +36,12 @@ pub struct LocalState<D: Dimension> {
     pub global: Vec<u64>,
     /// The rows of `state` that are the rank's own.
     pub own: Range<usize>,
+    /// For each rank, the own particles sent to it (indices from the first own row),
+    /// ascending: what [`LocalState::refresh`] and [`LocalState::share`] send again.
+    sent: Vec<Vec<u32>>,
+    /// For each rank, the rows of `state` that hold the particles received from it (this
+    /// rank's own rows for itself).
+    from: Vec<Range<usize>>,
 }
 
 /// Every rank calls this with its own particles `own` (rows `first..first + n` of the
@@ -73,6 +79,7 @@ pub fn exchange_halo<D: Dimension>(
     // The own rows, which the local state holds too; each message copies some of them.
     let mut copy = own.clone();
     let mut messages = Vec::with_capacity(size);
+    let mut sent = vec![Vec::new(); size];
     for k in 0..size {
         if k == me {
             messages.push(Vec::new());
@@ -92,6 +99,7 @@ pub fn exchange_halo<D: Dimension>(
             .zip(&send)
             .filter_map(|(g, &s)| s.then_some(g))
             .collect();
+        sent[k] = (0..n as u32).filter(|&i| send[i as usize]).collect();
         messages.push(encode(&copy.copy_rows(&send), &rows)?);
     }
     let received = ranks.exchange(messages);
@@ -101,9 +109,11 @@ pub fn exchange_halo<D: Dimension>(
         ..State::default()
     };
     let (mut global, mut own_rows) = (Vec::new(), 0..0);
+    let mut from = Vec::with_capacity(size);
     for (k, message) in received.into_iter().enumerate() {
+        let start = global.len();
         if k == me {
-            own_rows = global.len()..global.len() + n;
+            own_rows = start..start + n;
             state.append(&mut copy);
             global.extend(first..first + n as u64);
         } else {
@@ -111,6 +121,7 @@ pub fn exchange_halo<D: Dimension>(
             state.append(&mut part);
             global.extend(rows);
         }
+        from.push(start..global.len());
     }
     if !global.windows(2).all(|w| w[0] < w[1]) {
         return Err(SolverError::Exchange(
@@ -121,7 +132,97 @@ pub fn exchange_halo<D: Dimension>(
         state,
         global,
         own: own_rows,
+        sent,
+        from,
     })
+}
+
+impl<D: Dimension> LocalState<D> {
+    /// Sends the halo again with its present fields: the same particles to the same
+    /// ranks, each owner reading them from its own rows, and each rank overwrites its
+    /// halo rows with them (a stage's refresh: the membership is kept while a Verlet
+    /// list holds, the skin in the reach covering the motion). Every rank calls it.
+    pub fn refresh(&mut self, ranks: &dyn Ranks) -> Result<(), SolverError> {
+        let me = ranks.rank();
+        let n = self.state.particles.len();
+        let mut messages = Vec::with_capacity(ranks.size());
+        for (k, sent) in self.sent.iter().enumerate() {
+            if k == me || sent.is_empty() {
+                messages.push(Vec::new());
+                continue;
+            }
+            let mut keep = vec![false; n];
+            for &i in sent {
+                keep[self.own.start + i as usize] = true;
+            }
+            let rows: Vec<u64> = sent
+                .iter()
+                .map(|&i| self.global[self.own.start + i as usize])
+                .collect();
+            messages.push(encode(&self.state.copy_rows(&keep), &rows)?);
+        }
+        for (k, message) in ranks.exchange(messages).into_iter().enumerate() {
+            let rows = self.from[k].clone();
+            if k == me || rows.is_empty() {
+                continue;
+            }
+            let (mut part, got) = decode::<D>(&message, k)?;
+            if got != self.global[rows.clone()] {
+                return Err(SolverError::Exchange(format!(
+                    "rank {k} sent other particles than those of its first exchange"
+                )));
+            }
+            self.state.overwrite_rows(rows.start, &mut part);
+        }
+        Ok(())
+    }
+
+    /// Gives the halo rows of `values` (`width` f64s per local particle, the own rows
+    /// filled) their owners' values: each owner sends the entries of the particles it
+    /// sent, as pass 2 needs pass 1's gradients of the halo. Every rank calls it.
+    pub fn share(
+        &self,
+        ranks: &dyn Ranks,
+        values: &mut [f64],
+        width: usize,
+    ) -> Result<(), SolverError> {
+        if values.len() != self.global.len() * width {
+            return Err(SolverError::Exchange(format!(
+                "{} values for {} particles of width {width}",
+                values.len(),
+                self.global.len()
+            )));
+        }
+        let me = ranks.rank();
+        let messages = self
+            .sent
+            .iter()
+            .map(|sent| {
+                sent.iter()
+                    .flat_map(|&i| {
+                        let row = self.own.start + i as usize;
+                        values[row * width..(row + 1) * width].iter().copied()
+                    })
+                    .collect()
+            })
+            .collect();
+        for (k, message) in ranks.exchange(messages).into_iter().enumerate() {
+            let rows = self.from[k].clone();
+            if k == me || rows.is_empty() {
+                continue;
+            }
+            let place = &mut values[rows.start * width..rows.end * width];
+            if message.len() != place.len() {
+                return Err(SolverError::Exchange(format!(
+                    "rank {k} sent {} values for {} particles of width {width}",
+                    message.len(),
+                    rows.len()
+                )));
+            }
+            place.copy_from_slice(&message);
+        }
+        Ok(())
+    }
 }
 
 /// `x` and its images across `boundaries` within `reach`, chained in the boundaries'
@@ -326,9 +427,65 @@ mod tests {
         }
     }
 
-    /// [`a_ranks_local_state_gives_its_rows_the_partners_of_every_particle`] on `whole`.
-    fn check_local_states(whole: &State<Dim3>, slabs: bool) {
-        let boundaries = [
+    /// [`a_refresh_and_a_share_give_the_halo_its_owners_present_values`] on `locals`.
+    fn check_refresh(mut locals: Vec<LocalState<Dim3>>) {
+        let size = locals.len();
+        let moved = |g: u64| DVec3::new(1e-3, -2e-3, 3e-3) * (g % 7) as f64;
+        for local in &mut locals {
+            for k in local.own.clone() {
+                let g = local.global[k];
+                local.state.particles.position[k] += moved(g);
+                local.state.stress[k] *= 2.0;
+            }
+        }
+        let posted = Mutex::new(vec![Vec::new(); size]);
+        let all_here = Barrier::new(size);
+        let shared: Vec<(LocalState<Dim3>, Vec<f64>)> = std::thread::scope(|scope| {
+            let handles: Vec<_> = locals
+                .into_iter()
+                .enumerate()
+                .map(|(rank, mut local)| {
+                    let (posted, all_here) = (&posted, &all_here);
+                    scope.spawn(move || {
+                        let ranks = Threads {
+                            rank,
+                            size,
+                            posted,
+                            all_here,
+                        };
+                        local.refresh(&ranks).unwrap();
+                        // Two values per particle, set on the own rows only.
+                        let mut values = vec![f64::NAN; 2 * local.global.len()];
+                        for k in local.own.clone() {
+                            let g = local.global[k] as f64;
+                            values[2 * k..2 * k + 2].copy_from_slice(&[g, -g]);
+                        }
+                        local.share(&ranks, &mut values, 2).unwrap();
+                        (local, values)
+                    })
+                })
+                .collect();
+            handles.into_iter().map(|h| h.join().unwrap()).collect()
+        });
+        for (local, values) in &shared {
+            for (k, &g) in local.global.iter().enumerate() {
+                let owner = &shared
+                    .iter()
+                    .find(|(l, _)| l.global[l.own.clone()].contains(&g))
+                    .expect("every particle has an owner")
+                    .0;
+                let o = owner.own.start + (g - owner.global[owner.own.start]) as usize;
+                let (p, q) = (&local.state.particles, &owner.state.particles);
+                assert_eq!(p.position[k].to_array(), q.position[o].to_array());
+                assert_eq!(local.state.stress[k], owner.state.stress[o]);
+                assert_eq!(values[2 * k..2 * k + 2], [g as f64, -(g as f64)]);
+            }
+        }
+    }
+
+    /// A wall at z = 0 and a periodic pair of faces in x, whose corner images chain.
+    fn wall_and_period() -> [Boundary<Dim3>; 2] {
+        [
             Boundary::Wall {
                 point: DVec3::ZERO,
                 normal: DVec3::Z,
@@ -338,38 +495,68 @@ mod tests {
                 lo: 0.0,
                 hi: 1.0,
             },
-        ];
+        ]
+    }
+
+    /// The first row of each of `size` equal ranges of `n` rows, and `n`.
+    fn cuts(n: usize, size: usize) -> Vec<usize> {
+        (0..=size).map(|k| k * n / size).collect()
+    }
+
+    /// Each rank's local state, the ranks (as threads) owning the rows between `cuts`.
+    fn local_states(
+        whole: &State<Dim3>,
+        cuts: &[usize],
+        boundaries: &[Boundary<Dim3>],
+    ) -> Vec<LocalState<Dim3>> {
+        let (n, size) = (whole.particles.len(), cuts.len() - 1);
+        let posted = Mutex::new(vec![Vec::new(); size]);
+        let all_here = Barrier::new(size);
+        std::thread::scope(|scope| {
+            let handles: Vec<_> = (0..size)
+                .map(|rank| {
+                    let (posted, all_here) = (&posted, &all_here);
+                    scope.spawn(move || {
+                        let mut all = whole.clone();
+                        let mine: Vec<bool> = (0..n)
+                            .map(|i| (cuts[rank]..cuts[rank + 1]).contains(&i))
+                            .collect();
+                        let own = all.split_off(&mine);
+                        let ranks = Threads {
+                            rank,
+                            size,
+                            posted,
+                            all_here,
+                        };
+                        let h = own.particles.smoothing_length.clone();
+                        exchange_halo(&ranks, &own, cuts[rank] as u64, &h, boundaries).unwrap()
+                    })
+                })
+                .collect();
+            handles.into_iter().map(|h| h.join().unwrap()).collect()
+        })
+    }
+
+    /// After every rank moves its own particles and changes their stress, a refresh gives
+    /// every halo row its owner's new fields, and a share its owner's values.
+    #[test]
+    fn a_refresh_and_a_share_give_the_halo_its_owners_present_values() {
+        let whole = cloud(1500, true);
+        for size in [2, 3, 5] {
+            let locals = local_states(&whole, &cuts(1500, size), &wall_and_period());
+            check_refresh(locals);
+        }
+    }
+
+    /// [`a_ranks_local_state_gives_its_rows_the_partners_of_every_particle`] on `whole`.
+    fn check_local_states(whole: &State<Dim3>, slabs: bool) {
+        let boundaries = wall_and_period();
         let p = &whole.particles;
         let n = p.len();
         let expected = partners(&p.position, &p.smoothing_length, &boundaries, 0..n);
         for size in [1, 2, 3, 5] {
-            let posted = Mutex::new(vec![Vec::new(); size]);
-            let all_here = Barrier::new(size);
-            let cuts: Vec<usize> = (0..=size).map(|k| k * n / size).collect();
-            let locals: Vec<LocalState<Dim3>> = std::thread::scope(|scope| {
-                let handles: Vec<_> = (0..size)
-                    .map(|rank| {
-                        let (posted, all_here) = (&posted, &all_here);
-                        let (cuts, boundaries) = (&cuts, &boundaries);
-                        scope.spawn(move || {
-                            let mut all = whole.clone();
-                            let mine: Vec<bool> = (0..n)
-                                .map(|i| (cuts[rank]..cuts[rank + 1]).contains(&i))
-                                .collect();
-                            let own = all.split_off(&mine);
-                            let ranks = Threads {
-                                rank,
-                                size,
-                                posted,
-                                all_here,
-                            };
-                            let h = own.particles.smoothing_length.clone();
-                            exchange_halo(&ranks, &own, cuts[rank] as u64, &h, boundaries).unwrap()
-                        })
-                    })
-                    .collect();
-                handles.into_iter().map(|h| h.join().unwrap()).collect()
-            });
+            let cuts = cuts(n, size);
+            let locals = local_states(whole, &cuts, &boundaries);
             for (rank, local) in locals.iter().enumerate() {
                 let q = &local.state.particles;
                 let g: Vec<usize> = local.global.iter().map(|&g| g as usize).collect();
