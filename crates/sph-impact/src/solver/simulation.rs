@@ -15,7 +15,7 @@ use crate::solver::damage::{
     fragment_densities, has_tensor_damage, tensor_damage_rates,
 };
 use crate::solver::derivatives::{
-    GradientOptions, GradientSet, PairRates, Rates, gradients, rates, summation_density,
+    GradientOptions, GradientSet, Gradients, PairRates, Rates, gradients, rates, summation_density,
 };
 use crate::solver::error::SolverError;
 use crate::solver::free_flight::{FreeFlight, leaving};
@@ -25,7 +25,7 @@ use crate::solver::pair_kernel::{
     PairKernel, ScalarPairKernel, TensorPairKernel, equivalent_radius,
 };
 use crate::solver::pair_rules::{NoPairRule, PairRule};
-use crate::solver::ranks::{self, OneRank, Ranks};
+use crate::solver::ranks::{self, Flat, HaloLists, OneRank, Ranks};
 use crate::solver::state::{Extended, Ghosts, PairProbe, PlacedGhost, RealColumns, State};
 use crate::solver::timestep::{TimestepVote, acceleration_vote, cfl_vote, density_vote};
 use crate::solver::warm_threads::KeepAwake;
@@ -43,6 +43,7 @@ use std::time::Instant;
 
 mod advance;
 mod checkpoint;
+mod local_stage;
 mod particle_terms;
 mod smoothing;
 mod stage;
@@ -580,7 +581,7 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
         let search = self.scheme.neighbour_search;
         let kept = self.verlet_list_for(&s0_state);
         let keep = search != NeighbourSearch::EachStage;
-        let (s0, topology) = match self.stage(&mut s0_state, kept, keep, ranks) {
+        let (s0, topology) = match self.stage(&mut s0_state, kept, keep, ranks, None) {
             Ok(stage) => stage,
             Err(e) => return Err(self.put_back(s0_state, e)),
         };
@@ -657,7 +658,7 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
         } else {
             topology
         };
-        let stage = self.stage(&mut half, reuse, verlet, ranks);
+        let stage = self.stage(&mut half, reuse, verlet, ranks, None);
         half.swap_constants(&mut s0_state);
         let (s1, kept) = match stage {
             Ok(stage) => stage,
@@ -773,7 +774,7 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
         if self.scheme.density == DensityForm::Summation {
             let mut s = self.state.clone();
             // On one rank: the state is every rank's (solver/ranks.rs).
-            self.stage(&mut s, None, false, &OneRank)?;
+            self.stage(&mut s, None, false, &OneRank, None)?;
             self.state.particles.density = s.particles.density;
         }
         Ok(())

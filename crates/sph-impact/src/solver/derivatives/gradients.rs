@@ -128,8 +128,9 @@ impl<D: Dimension> PairGradients<D> {
     }
 }
 
-/// Pass 1 over the blocks of rows `blocks` (of `rows` rows each; all of them in a single
-/// process). With `generic` the loop that reads the options runs even where they are
+/// Pass 1 over the rows `own`, in blocks of `rows` rows from its first (all of them in a
+/// single process; a rank's share on several, or its own rows in a local state,
+/// solver/ranks/local.rs: either way the first at a block's start in the global order). With `generic` the loop that reads the options runs even where they are
 /// the study's. With `pick`, `list` holds every listed pair of a Verlet list and pass 1
 /// picks the stage's pairs from it as it reads each row (`probe`'s test, as
 /// `NeighborList::select_pairs` would pick them), handing back each block's picked rows
@@ -139,17 +140,14 @@ pub(crate) fn gradients<D: Dimension, P: PairKernel<D>>(
     list: Pairs<'_>,
     pk: &P,
     options: GradientOptions,
-    (rows, blocks): (usize, Range<usize>),
+    (rows, own): (usize, Range<usize>),
     (generic, pick): (bool, Option<&PairProbe<D>>),
 ) -> (GradientSet<D>, Vec<PickedRows>) {
     // The study's options as constants of the loop where they are the run's
     // (`GradientOptions::STUDY`, as pair_scheme.rs does for pass 2) unless `generic`
     // asks for the loop that reads them; the same arithmetic either way.
     let study = !generic && options.is_study(ext);
-    per_case!(
-        gradients_in(ext, list, pk, options, rows, blocks, pick),
-        study
-    )
+    per_case!(gradients_in(ext, list, pk, options, rows, own, pick), study)
 }
 
 /// [`gradients`] for one geometry (`RZ`) and, with `STUDY`, the study's options
@@ -161,7 +159,7 @@ fn gradients_in<D: Dimension, P: PairKernel<D>, const RZ: bool, const STUDY: boo
     pk: &P,
     options: GradientOptions,
     rows: usize,
-    blocks: Range<usize>,
+    own: Range<usize>,
     pick: Option<&PairProbe<D>>,
 ) -> (GradientSet<D>, Vec<PickedRows>) {
     let GradientOptions {
@@ -277,12 +275,12 @@ fn gradients_in<D: Dimension, P: PairKernel<D>, const RZ: bool, const STUDY: boo
     let n = ext.n_real;
     let keep = correct || keep_correction;
     // Each block's rows: their gradients, and where kept their corrections and ∇e.
-    let fill = |b: usize,
+    let fill = |start: usize,
                 out: &mut [Gradients<D>],
                 mut corr: Option<&mut [D::Tensor]>,
                 mut grad_e: Option<&mut [D::Vector]>|
      -> Option<PickedRows> {
-        let (start, end) = (b * rows, b * rows + out.len());
+        let end = start + out.len();
         let mut sums: Vec<Sums<D>> = (start..end)
             .map(|i| Sums {
                 l: D::Tensor::ZERO,
@@ -360,8 +358,7 @@ fn gradients_in<D: Dimension, P: PairKernel<D>, const RZ: bool, const STUDY: boo
     } else {
         Vec::new()
     };
-    // Only the blocks `blocks` (this rank's; solver/ranks.rs): the other rows stay unset.
-    let own = pair_blocks::rows_of(&blocks, rows, n);
+    // Only the rows `own` (this rank's; solver/ranks.rs): the other rows stay unset.
     let n_blocks = own.len().div_ceil(rows);
     let corr = chunks_or_none(rows_or_empty(&mut correction, &own), rows, n_blocks);
     let ge = chunks_or_none(rows_or_empty(&mut grad_e, &own), rows, n_blocks);
@@ -369,14 +366,14 @@ fn gradients_in<D: Dimension, P: PairKernel<D>, const RZ: bool, const STUDY: boo
     // thread idle at the end of the pass where blocks are few (RZ: 26); and the thread
     // that finishes first does not sleep while the last blocks run (warm_threads.rs).
     let mut picked: Vec<Option<PickedRows>> = (0..n_blocks).map(|_| None).collect();
-    let tasks = each[own]
+    let tasks = each[own.clone()]
         .par_chunks_mut(rows)
         .zip(corr)
         .zip(ge)
         .zip(picked.par_iter_mut())
         .enumerate();
     for_each_awake(tasks, |(b, (((out, corr), ge), picked))| {
-        *picked = fill(blocks.start + b, out, corr, ge)
+        *picked = fill(own.start + b * rows, out, corr, ge)
     });
     (
         GradientSet {

@@ -157,9 +157,9 @@ pub(crate) struct PairRates<D: Dimension> {
     pub hoop_gauge: Vec<f64>,
 }
 
-/// Pass 2 over the blocks of rows `blocks` (of `rows` rows each; all of them in a single
-/// process): the other rows' rates and hoop gauges stay unset, and `boundary` lists
-/// only these blocks' particles. With `generic` the loop that reads the scheme's
+/// Pass 2 over the rows `own`, in blocks of `rows` rows from its first (as pass 1,
+/// gradients.rs): the other rows' rates and hoop gauges stay unset, and `boundary`
+/// lists only these rows' particles. With `generic` the loop that reads the scheme's
 /// choices runs even where the scheme is the study's (pair_scheme.rs).
 pub(crate) fn rates<D: Dimension, P: PairKernel<D>>(
     ext: &Extended<'_, D>,
@@ -167,7 +167,7 @@ pub(crate) fn rates<D: Dimension, P: PairKernel<D>>(
     pk: &P,
     grads: Option<&GradientSet<D>>,
     (scheme, generic): (&SchemeConfig, bool),
-    (rows, blocks): (usize, Range<usize>),
+    (rows, own): (usize, Range<usize>),
     rule: &impl PairRule<D>,
 ) -> PairRates<D> {
     // The study's choices as constants of the loop where the scheme makes them, unless
@@ -175,7 +175,7 @@ pub(crate) fn rates<D: Dimension, P: PairKernel<D>>(
     // either way.
     let study = !generic && PairScheme::is_study(scheme);
     per_case!(
-        rates_in(ext, list, pk, grads, scheme, rows, blocks, rule),
+        rates_in(ext, list, pk, grads, scheme, rows, own, rule),
         study
     )
 }
@@ -189,7 +189,7 @@ fn rates_in<D: Dimension, P: PairKernel<D>, const RZ: bool, const STUDY: bool>(
     grads: Option<&GradientSet<D>>,
     scheme: &SchemeConfig,
     rows: usize,
-    blocks: Range<usize>,
+    own: Range<usize>,
     rule: &impl PairRule<D>,
 ) -> PairRates<D> {
     // What the loop reads of the scheme per pair: constants when STUDY. Each closure
@@ -651,8 +651,8 @@ fn rates_in<D: Dimension, P: PairKernel<D>, const RZ: bool, const STUDY: bool>(
     let n = ext.n_real;
     let mut each = vec![Rates::ZERO; n];
     let mut hoop_gauge = if rz { vec![1.0; n] } else { Vec::new() };
-    let fill = |b: usize, out: &mut [Rates<D>], mut gauge: Option<&mut [f64]>| {
-        let (start, end) = (b * rows, b * rows + out.len());
+    let fill = |start: usize, out: &mut [Rates<D>], mut gauge: Option<&mut [f64]>| {
+        let end = start + out.len();
         let mut own = vec![PairPart::<D>::ZERO; out.len()];
         let mut approach = vec![0.0_f64; out.len()];
         let mut boundary = Vec::new();
@@ -726,19 +726,18 @@ fn rates_in<D: Dimension, P: PairKernel<D>, const RZ: bool, const STUDY: bool>(
         }
         boundary
     };
-    let own = pair_blocks::rows_of(&blocks, rows, n);
     // The blocks go to the threads one task each, as in pass 1 (warm_threads.rs); the
     // boundary lists still come back in block order. The hoop gauge is RZ's only.
     let n_blocks = own.len().div_ceil(rows);
     let mut lists = vec![Vec::new(); n_blocks];
     let gauge = chunks_or_none(rows_or_empty(&mut hoop_gauge, &own), rows, n_blocks);
-    let tasks = each[own]
+    let tasks = each[own.clone()]
         .par_chunks_mut(rows)
         .zip(gauge)
         .zip(lists.par_iter_mut())
         .enumerate();
     for_each_awake(tasks, |(b, ((out, gauge), list))| {
-        *list = fill(blocks.start + b, out, gauge)
+        *list = fill(own.start + b * rows, out, gauge)
     });
     let boundary = lists.into_iter().flatten().collect();
     PairRates {

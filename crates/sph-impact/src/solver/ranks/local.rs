@@ -36,11 +36,21 @@ pub struct LocalState<D: Dimension> {
     pub global: Vec<u64>,
     /// The rows of `state` that are the rank's own.
     pub own: Range<usize>,
+    /// What goes where: [`LocalState::refresh`] and [`LocalState::share`] send along it.
+    pub(crate) lists: HaloLists,
+}
+
+/// Which particles a rank sends each rank and where it holds what each sends it (the
+/// lists of one [`exchange_halo`]).
+#[derive(Clone, Debug)]
+pub(crate) struct HaloLists {
+    /// The rank's own rows in the local state.
+    own: Range<usize>,
     /// For each rank, the own particles sent to it (indices from the first own row),
-    /// ascending: what [`LocalState::refresh`] and [`LocalState::share`] send again.
+    /// ascending.
     sent: Vec<Vec<u32>>,
-    /// For each rank, the rows of `state` that hold the particles received from it (this
-    /// rank's own rows for itself).
+    /// For each rank, the rows of the local state that hold the particles received from
+    /// it (this rank's own rows for itself).
     from: Vec<Range<usize>>,
 }
 
@@ -131,9 +141,12 @@ pub fn exchange_halo<D: Dimension>(
     Ok(LocalState {
         state,
         global,
-        own: own_rows,
-        sent,
-        from,
+        own: own_rows.clone(),
+        lists: HaloLists {
+            own: own_rows,
+            sent,
+            from,
+        },
     })
 }
 
@@ -146,7 +159,7 @@ impl<D: Dimension> LocalState<D> {
         let me = ranks.rank();
         let n = self.state.particles.len();
         let mut messages = Vec::with_capacity(ranks.size());
-        for (k, sent) in self.sent.iter().enumerate() {
+        for (k, sent) in self.lists.sent.iter().enumerate() {
             if k == me || sent.is_empty() {
                 messages.push(Vec::new());
                 continue;
@@ -162,7 +175,7 @@ impl<D: Dimension> LocalState<D> {
             messages.push(encode(&self.state.copy_rows(&keep), &rows)?);
         }
         for (k, message) in ranks.exchange(messages).into_iter().enumerate() {
-            let rows = self.from[k].clone();
+            let rows = self.lists.from[k].clone();
             if k == me || rows.is_empty() {
                 continue;
             }
@@ -193,6 +206,18 @@ impl<D: Dimension> LocalState<D> {
                 self.global.len()
             )));
         }
+        self.lists.share(ranks, values, width)
+    }
+}
+
+impl HaloLists {
+    /// [`LocalState::share`], on values of the right length.
+    pub(crate) fn share(
+        &self,
+        ranks: &dyn Ranks,
+        values: &mut [f64],
+        width: usize,
+    ) -> Result<(), SolverError> {
         let me = ranks.rank();
         let messages = self
             .sent
@@ -310,42 +335,11 @@ fn decode<D: Dimension>(message: &[f64], from: usize) -> Result<(State<D>, Vec<u
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::solver::Gathered;
+    use crate::solver::ranks::test_threads::Threads;
     use sph_core::Particles;
     use sph_core::dimension::Dim3;
     use sph_core::glam::{DMat3, DVec3};
     use std::sync::{Barrier, Mutex};
-
-    /// Ranks as the threads of a test: every call is a collective, so each round posts
-    /// its part, waits for all, reads, and waits again before the next round posts.
-    struct Threads<'a> {
-        rank: usize,
-        size: usize,
-        posted: &'a Mutex<Vec<Vec<f64>>>,
-        all_here: &'a Barrier,
-    }
-
-    impl Ranks for Threads<'_> {
-        fn rank(&self) -> usize {
-            self.rank
-        }
-        fn size(&self) -> usize {
-            self.size
-        }
-        fn all_gather(&self, own: Vec<f64>) -> Gathered {
-            self.posted.lock().unwrap()[self.rank] = own;
-            self.all_here.wait();
-            let parts = self.posted.lock().unwrap().clone();
-            self.all_here.wait();
-            Gathered {
-                lengths: parts.iter().map(Vec::len).collect(),
-                values: parts.concat(),
-            }
-        }
-        fn broadcast(&self, _: Vec<u8>) -> Vec<u8> {
-            unreachable!("the halo exchange does not broadcast")
-        }
-    }
 
     /// A cloud of `n` particles in the unit cube with supports over two octaves, with the
     /// stress and damage in use so that every field kind travels: sorted along x
@@ -447,12 +441,7 @@ mod tests {
                 .map(|(rank, mut local)| {
                     let (posted, all_here) = (&posted, &all_here);
                     scope.spawn(move || {
-                        let ranks = Threads {
-                            rank,
-                            size,
-                            posted,
-                            all_here,
-                        };
+                        let ranks = Threads::new(rank, size, posted, all_here);
                         local.refresh(&ranks).unwrap();
                         // Two values per particle, set on the own rows only.
                         let mut values = vec![f64::NAN; 2 * local.global.len()];
@@ -522,12 +511,7 @@ mod tests {
                             .map(|i| (cuts[rank]..cuts[rank + 1]).contains(&i))
                             .collect();
                         let own = all.split_off(&mine);
-                        let ranks = Threads {
-                            rank,
-                            size,
-                            posted,
-                            all_here,
-                        };
+                        let ranks = Threads::new(rank, size, posted, all_here);
                         let h = own.particles.smoothing_length.clone();
                         exchange_halo(&ranks, &own, cuts[rank] as u64, &h, boundaries).unwrap()
                     })

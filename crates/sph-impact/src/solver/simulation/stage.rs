@@ -52,6 +52,15 @@ struct PassesOut<D: Dimension> {
     selection: Option<PairSelection>,
 }
 
+/// A stage of a rank's local state (solver/ranks/local.rs): its own rows, which alone the
+/// search and the pair passes read, and the lists along which the halo's pass-1 values
+/// come from their owners over `ranks`.
+pub(super) struct LocalRun<'a> {
+    pub(super) own: Range<usize>,
+    pub(super) lists: &'a HaloLists,
+    pub(super) ranks: &'a dyn Ranks,
+}
+
 impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
     /// Pass 1 (when `options` asks for it) and pass 2 with the pair kernel `pk`, their
     /// blocks of rows shared out among `ranks` as `shares` gives them (solver/ranks.rs),
@@ -66,14 +75,17 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
         options: Option<GradientOptions>,
         (rows, shares): (usize, &[Range<usize>]),
         (ranks, pick): (&dyn Ranks, Option<PairProbe<D>>),
-    ) -> PassesOut<D> {
+        local: Option<&LocalRun<'_>>,
+    ) -> Result<PassesOut<D>, SolverError> {
         let n = ext.n_real;
         let size = ranks.size();
-        let mine = shares[ranks.rank()].clone();
-        let rows_of: Vec<Range<usize>> = shares
-            .iter()
-            .map(|b| pair_blocks::rows_of(b, rows, n))
-            .collect();
+        let rows_of: Vec<Range<usize>> = match local {
+            Some(l) => vec![l.own.clone()],
+            None => shares
+                .iter()
+                .map(|b| pair_blocks::rows_of(b, rows, n))
+                .collect(),
+        };
         let (mut g, picked) = match options {
             Some(o) => {
                 let (g, picked) = gradients(
@@ -81,7 +93,7 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
                     list,
                     pk,
                     o,
-                    (rows, mine.clone()),
+                    (rows, rows_of[ranks.rank()].clone()),
                     (self.generic_pair_loop, pick.as_ref()),
                 );
                 (Some(g), picked)
@@ -99,6 +111,24 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
             None => list,
         };
         let t = Instant::now();
+        if let (Some(l), Some(g)) = (local, &mut g) {
+            // A local state: the halo's gradients from their owners, which summed them.
+            share_rows(l, &mut g.each, Gradients::<D>::LEN, Flat::put, |x, v| {
+                *x = Gradients::get(v)
+            })?;
+            if !g.correction.is_empty() {
+                let len = ranks::tensor_len::<D>();
+                share_rows(l, &mut g.correction, len, ranks::put_tensor, |x, v| {
+                    *x = ranks::get_tensor(v)
+                })?;
+            }
+            if !g.energy.is_empty() {
+                let put = |v: &D::Vector, out: &mut Vec<f64>| ranks::put_vector(*v, out);
+                share_rows(l, &mut g.energy, D::DIM, put, |x, v| {
+                    *x = ranks::get_vector(v)
+                })?;
+            }
+        }
         if size > 1
             && let Some(g) = &mut g
         {
@@ -157,7 +187,7 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
             pk,
             g.as_ref(),
             (&self.scheme, self.generic_pair_loop),
-            (rows, mine),
+            (rows, rows_of[ranks.rank()].clone()),
             &self.pair_rule,
         );
         let t = Instant::now();
@@ -168,13 +198,13 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
             }
             r.boundary = ranks::gather_list(ranks, &r.boundary);
         }
-        PassesOut {
+        Ok(PassesOut {
             grads: g,
             rates: r,
             pass_2: t3,
             exchange: [exchange_gradients, t.elapsed().as_secs_f64()],
             selection,
-        }
+        })
     }
 
     /// Each of `size` ranks' blocks of the pair passes (of `rows` rows, over `n` real
@@ -216,6 +246,7 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
         reuse: Option<Topology<D>>,
         keep: bool,
         ranks: &dyn Ranks,
+        local: Option<&LocalRun<'_>>,
     ) -> Result<(Stage<D>, Option<Topology<D>>), SolverError> {
         let t0 = Instant::now();
         // P, c, D, P_D (which the pair terms see, paper §2), G, c_L and the adhesion
@@ -350,7 +381,9 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
                 let shares = self.shares(n_real, rows, size);
                 // On several ranks each searches the rows of its own blocks (and the
                 // particles that reach them), unless the summation density reads every row.
-                let mine = if size > 1 && self.scheme.density != DensityForm::Summation {
+                let mine = if let Some(l) = local {
+                    l.own.clone()
+                } else if size > 1 && self.scheme.density != DensityForm::Summation {
                     pair_blocks::rows_of(&shares[ranks.rank()], rows, n_real)
                 } else {
                     0..ext.position.len()
@@ -503,14 +536,22 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
         let pick = (ranks, probe);
         let passes = if ext.h_tensor.is_empty() {
             let pk = ScalarPairKernel::new(self.kernel, &ext.h, D::DIM);
-            self.pair_passes(&ext, pairs, &pk, options, blocks, pick)
+            self.pair_passes(&ext, pairs, &pk, options, blocks, pick, local)
         } else {
             let pk = TensorPairKernel {
                 kernel: self.kernel,
                 h_tensor: &ext.h_tensor,
                 h: &ext.h,
             };
-            self.pair_passes(&ext, pairs, &pk, options, blocks, pick)
+            self.pair_passes(&ext, pairs, &pk, options, blocks, pick, local)
+        };
+        let passes = match passes {
+            Ok(passes) => passes,
+            Err(e) => {
+                ext.release_pair_columns()
+                    .put_back(&mut state.particles, n_real);
+                return Err(e);
+            }
         };
         let PassesOut {
             grads,
@@ -659,6 +700,27 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
             })
             .reduce(|| none, TimestepVote::min)
     }
+}
+
+/// Gives the halo rows of `values` (one per particle of a local state) their owners'
+/// values, `len` f64s each as `put` writes and `get` reads them
+/// (solver/ranks/local.rs, `HaloLists::share`).
+fn share_rows<T>(
+    local: &LocalRun<'_>,
+    values: &mut [T],
+    len: usize,
+    put: impl Fn(&T, &mut Vec<f64>),
+    get: impl Fn(&mut T, &[f64]),
+) -> Result<(), SolverError> {
+    let mut flat = Vec::with_capacity(values.len() * len);
+    for x in values.iter() {
+        put(x, &mut flat);
+    }
+    local.lists.share(local.ranks, &mut flat, len)?;
+    for (x, v) in values.iter_mut().zip(flat.chunks_exact(len)) {
+        get(x, v);
+    }
+    Ok(())
 }
 
 /// The artificial-stress tensor R of every particle, ghosts included, from its total
