@@ -22,7 +22,6 @@ mod local;
 #[cfg(test)]
 pub(crate) mod test_threads;
 pub(crate) use halo::{Halo, rows_read};
-pub(crate) use local::HaloLists;
 pub use local::{LocalState, exchange_halo};
 
 /// The ranks of a run, as the solver sees them: who this is, how many there are, and the

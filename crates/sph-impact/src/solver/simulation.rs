@@ -15,7 +15,7 @@ use crate::solver::damage::{
     fragment_densities, has_tensor_damage, tensor_damage_rates,
 };
 use crate::solver::derivatives::{
-    GradientOptions, GradientSet, Gradients, PairRates, Rates, gradients, rates, summation_density,
+    GradientOptions, GradientSet, PairRates, Rates, gradients, rates, summation_density,
 };
 use crate::solver::error::SolverError;
 use crate::solver::free_flight::{FreeFlight, leaving};
@@ -25,7 +25,7 @@ use crate::solver::pair_kernel::{
     PairKernel, ScalarPairKernel, TensorPairKernel, equivalent_radius,
 };
 use crate::solver::pair_rules::{NoPairRule, PairRule};
-use crate::solver::ranks::{self, Flat, HaloLists, OneRank, Ranks};
+use crate::solver::ranks::{self, Halo, OneRank, Ranks};
 use crate::solver::state::{Extended, Ghosts, PairProbe, PlacedGhost, RealColumns, State};
 use crate::solver::timestep::{TimestepVote, acceleration_vote, cfl_vote, density_vote};
 use crate::solver::warm_threads::KeepAwake;

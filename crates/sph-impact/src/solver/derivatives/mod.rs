@@ -151,7 +151,7 @@ mod rates;
 mod summation;
 mod switch;
 
-pub(crate) use gradients::{GradientOptions, GradientSet, Gradients, gradients};
+pub(crate) use gradients::{GradientOptions, GradientSet, gradients};
 pub(crate) use pair_scheme::PairScheme;
 pub(crate) use rates::{PairRates, Rates, rates};
 pub(crate) use summation::summation_density;

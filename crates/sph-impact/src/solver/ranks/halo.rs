@@ -32,9 +32,9 @@ pub(crate) fn rows_read(list: Pairs<'_>, source: &[u32], own: Range<usize>, n: u
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub(crate) struct Halo {
     /// The rows this rank receives from each rank, ascending (none from itself).
-    receive: Vec<Vec<u32>>,
+    pub(super) receive: Vec<Vec<u32>>,
     /// The rows each rank asked of this one, ascending.
-    send: Vec<Vec<u32>>,
+    pub(super) send: Vec<Vec<u32>>,
 }
 
 impl Halo {

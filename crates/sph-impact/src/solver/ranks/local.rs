@@ -15,7 +15,7 @@
 //! their owners' order and the ranks' ranges ascend, so the local state is in global
 //! order: every own row lists its partners in the order a single process does.
 
-use super::Ranks;
+use super::{Halo, Ranks, get_vector, put_vector};
 use crate::solver::boundary::{Boundary, Ghost};
 use crate::solver::{SolverError, State};
 use sph_core::{Dimension, Region, ScalarSupport, Vector, regions_of_rows};
@@ -36,22 +36,10 @@ pub struct LocalState<D: Dimension> {
     pub global: Vec<u64>,
     /// The rows of `state` that are the rank's own.
     pub own: Range<usize>,
-    /// What goes where: [`LocalState::refresh`] and [`LocalState::share`] send along it.
-    pub(crate) lists: HaloLists,
-}
-
-/// Which particles a rank sends each rank and where it holds what each sends it (the
-/// lists of one [`exchange_halo`]).
-#[derive(Clone, Debug)]
-pub(crate) struct HaloLists {
-    /// The rank's own rows in the local state.
-    own: Range<usize>,
-    /// For each rank, the own particles sent to it (indices from the first own row),
-    /// ascending.
-    sent: Vec<Vec<u32>>,
-    /// For each rank, the rows of the local state that hold the particles received from
-    /// it (this rank's own rows for itself).
-    from: Vec<Range<usize>>,
+    /// Which particles go to which rank and where each rank's arrive, as local rows:
+    /// [`LocalState::refresh`] sends along it, and the stage the halo's pass-1 values
+    /// (`Halo::fill`, the replicated run's exchange by rows).
+    pub(crate) halo: Halo,
 }
 
 /// Every rank calls this with its own particles `own` (rows `first..first + n` of the
@@ -119,34 +107,38 @@ pub fn exchange_halo<D: Dimension>(
         ..State::default()
     };
     let (mut global, mut own_rows) = (Vec::new(), 0..0);
-    let mut from = Vec::with_capacity(size);
+    // The rows of the local state each rank's particles arrive in (none from itself).
+    let mut receive = Vec::with_capacity(size);
     for (k, message) in received.into_iter().enumerate() {
         let start = global.len();
         if k == me {
             own_rows = start..start + n;
             state.append(&mut copy);
             global.extend(first..first + n as u64);
+            receive.push(Vec::new());
         } else {
             let (mut part, rows) = decode::<D>(&message, k)?;
             state.append(&mut part);
             global.extend(rows);
+            receive.push((start as u32..global.len() as u32).collect());
         }
-        from.push(start..global.len());
     }
     if !global.windows(2).all(|w| w[0] < w[1]) {
         return Err(SolverError::Exchange(
             "the ranks' ranges of the global order do not ascend with the rank".into(),
         ));
     }
+    // The rows sent, as rows of the local state.
+    let shift = own_rows.start as u32;
+    let send = sent
+        .into_iter()
+        .map(|rows| rows.into_iter().map(|i| i + shift).collect())
+        .collect();
     Ok(LocalState {
         state,
         global,
-        own: own_rows.clone(),
-        lists: HaloLists {
-            own: own_rows,
-            sent,
-            from,
-        },
+        own: own_rows,
+        halo: Halo { receive, send },
     })
 }
 
@@ -156,95 +148,38 @@ impl<D: Dimension> LocalState<D> {
     /// halo rows with them (a stage's refresh: the membership is kept while a Verlet
     /// list holds, the skin in the reach covering the motion). Every rank calls it.
     pub fn refresh(&mut self, ranks: &dyn Ranks) -> Result<(), SolverError> {
-        let me = ranks.rank();
         let n = self.state.particles.len();
         let mut messages = Vec::with_capacity(ranks.size());
-        for (k, sent) in self.lists.sent.iter().enumerate() {
-            if k == me || sent.is_empty() {
+        for rows in &self.halo.send {
+            if rows.is_empty() {
                 messages.push(Vec::new());
                 continue;
             }
             let mut keep = vec![false; n];
-            for &i in sent {
-                keep[self.own.start + i as usize] = true;
+            for &j in rows {
+                keep[j as usize] = true;
             }
-            let rows: Vec<u64> = sent
-                .iter()
-                .map(|&i| self.global[self.own.start + i as usize])
-                .collect();
-            messages.push(encode(&self.state.copy_rows(&keep), &rows)?);
+            let global: Vec<u64> = rows.iter().map(|&j| self.global[j as usize]).collect();
+            messages.push(encode(&self.state.copy_rows(&keep), &global)?);
         }
         for (k, message) in ranks.exchange(messages).into_iter().enumerate() {
-            let rows = self.lists.from[k].clone();
-            if k == me || rows.is_empty() {
+            let rows = &self.halo.receive[k];
+            let Some(&start) = rows.first() else {
                 continue;
-            }
+            };
             let (mut part, got) = decode::<D>(&message, k)?;
-            if got != self.global[rows.clone()] {
+            if got
+                .iter()
+                .zip(rows)
+                .any(|(&g, &j)| g != self.global[j as usize])
+                || got.len() != rows.len()
+            {
                 return Err(SolverError::Exchange(format!(
                     "rank {k} sent other particles than those of its first exchange"
                 )));
             }
-            self.state.overwrite_rows(rows.start, &mut part);
-        }
-        Ok(())
-    }
-
-    /// Gives the halo rows of `values` (`width` f64s per local particle, the own rows
-    /// filled) their owners' values: each owner sends the entries of the particles it
-    /// sent, as pass 2 needs pass 1's gradients of the halo. Every rank calls it.
-    pub fn share(
-        &self,
-        ranks: &dyn Ranks,
-        values: &mut [f64],
-        width: usize,
-    ) -> Result<(), SolverError> {
-        if values.len() != self.global.len() * width {
-            return Err(SolverError::Exchange(format!(
-                "{} values for {} particles of width {width}",
-                values.len(),
-                self.global.len()
-            )));
-        }
-        self.lists.share(ranks, values, width)
-    }
-}
-
-impl HaloLists {
-    /// [`LocalState::share`], on values of the right length.
-    pub(crate) fn share(
-        &self,
-        ranks: &dyn Ranks,
-        values: &mut [f64],
-        width: usize,
-    ) -> Result<(), SolverError> {
-        let me = ranks.rank();
-        let messages = self
-            .sent
-            .iter()
-            .map(|sent| {
-                sent.iter()
-                    .flat_map(|&i| {
-                        let row = self.own.start + i as usize;
-                        values[row * width..(row + 1) * width].iter().copied()
-                    })
-                    .collect()
-            })
-            .collect();
-        for (k, message) in ranks.exchange(messages).into_iter().enumerate() {
-            let rows = self.from[k].clone();
-            if k == me || rows.is_empty() {
-                continue;
-            }
-            let place = &mut values[rows.start * width..rows.end * width];
-            if message.len() != place.len() {
-                return Err(SolverError::Exchange(format!(
-                    "rank {k} sent {} values for {} particles of width {width}",
-                    message.len(),
-                    rows.len()
-                )));
-            }
-            place.copy_from_slice(&message);
+            // A rank's particles arrive in consecutive rows (global order).
+            self.state.overwrite_rows(start as usize, &mut part);
         }
         Ok(())
     }
@@ -270,8 +205,8 @@ fn images_of<D: Dimension>(x: D::Vector, reach: f64, boundaries: &[Boundary<D>])
 fn put_regions<V: Vector>(regions: &[Region<V>]) -> Vec<f64> {
     let mut out = Vec::with_capacity(regions.len() * (2 * V::DIM + 1));
     for b in regions {
-        out.extend((0..V::DIM).map(|k| b.lo.component(k)));
-        out.extend((0..V::DIM).map(|k| b.hi.component(k)));
+        put_vector(b.lo, &mut out);
+        put_vector(b.hi, &mut out);
         out.push(b.reach);
     }
     out
@@ -281,8 +216,8 @@ fn put_regions<V: Vector>(regions: &[Region<V>]) -> Vec<f64> {
 fn get_regions<V: Vector>(v: &[f64]) -> Vec<Region<V>> {
     v.chunks_exact(2 * V::DIM + 1)
         .map(|c| Region {
-            lo: V::from_fn(|k| c[k]),
-            hi: V::from_fn(|k| c[V::DIM + k]),
+            lo: get_vector(c),
+            hi: get_vector(&c[V::DIM..]),
             reach: c[2 * V::DIM],
         })
         .collect()
@@ -434,7 +369,7 @@ mod tests {
         }
         let posted = Mutex::new(vec![Vec::new(); size]);
         let all_here = Barrier::new(size);
-        let shared: Vec<(LocalState<Dim3>, Vec<f64>)> = std::thread::scope(|scope| {
+        let shared: Vec<(LocalState<Dim3>, Vec<[f64; 2]>)> = std::thread::scope(|scope| {
             let handles: Vec<_> = locals
                 .into_iter()
                 .enumerate()
@@ -444,12 +379,15 @@ mod tests {
                         let ranks = Threads::new(rank, size, posted, all_here);
                         local.refresh(&ranks).unwrap();
                         // Two values per particle, set on the own rows only.
-                        let mut values = vec![f64::NAN; 2 * local.global.len()];
+                        let mut values = vec![[f64::NAN; 2]; local.global.len()];
                         for k in local.own.clone() {
                             let g = local.global[k] as f64;
-                            values[2 * k..2 * k + 2].copy_from_slice(&[g, -g]);
+                            values[k] = [g, -g];
                         }
-                        local.share(&ranks, &mut values, 2).unwrap();
+                        let put = |x: &[f64; 2], out: &mut Vec<f64>| out.extend_from_slice(x);
+                        local
+                            .halo
+                            .fill_by(&ranks, &mut values, 2, put, |v| [v[0], v[1]]);
                         (local, values)
                     })
                 })
@@ -467,7 +405,7 @@ mod tests {
                 let (p, q) = (&local.state.particles, &owner.state.particles);
                 assert_eq!(p.position[k].to_array(), q.position[o].to_array());
                 assert_eq!(local.state.stress[k], owner.state.stress[o]);
-                assert_eq!(values[2 * k..2 * k + 2], [g as f64, -(g as f64)]);
+                assert_eq!(values[k], [g as f64, -(g as f64)]);
             }
         }
     }
@@ -522,7 +460,7 @@ mod tests {
     }
 
     /// After every rank moves its own particles and changes their stress, a refresh gives
-    /// every halo row its owner's new fields, and a share its owner's values.
+    /// every halo row its owner's new fields, and the halo's `fill` its owner's values.
     #[test]
     fn a_refresh_and_a_share_give_the_halo_its_owners_present_values() {
         let whole = cloud(1500, true);

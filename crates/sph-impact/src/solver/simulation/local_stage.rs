@@ -41,11 +41,11 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
         }
         let saved = self.pair_block_rows.replace(rows);
         let LocalState {
-            state, own, lists, ..
+            state, own, halo, ..
         } = local;
         let run = LocalRun {
             own: own.clone(),
-            lists,
+            halo,
             ranks,
         };
         let out = self.stage(state, None, false, &OneRank, Some(&run));

@@ -53,11 +53,11 @@ struct PassesOut<D: Dimension> {
 }
 
 /// A stage of a rank's local state (solver/ranks/local.rs): its own rows, which alone the
-/// search and the pair passes read, and the lists along which the halo's pass-1 values
+/// search and the pair passes read, and the halo along which the halo's pass-1 values
 /// come from their owners over `ranks`.
 pub(super) struct LocalRun<'a> {
     pub(super) own: Range<usize>,
-    pub(super) lists: &'a HaloLists,
+    pub(super) halo: &'a Halo,
     pub(super) ranks: &'a dyn Ranks,
 }
 
@@ -113,20 +113,17 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
         let t = Instant::now();
         if let (Some(l), Some(g)) = (local, &mut g) {
             // A local state: the halo's gradients from their owners, which summed them.
-            share_rows(l, &mut g.each, Gradients::<D>::LEN, Flat::put, |x, v| {
-                *x = Gradients::get(v)
-            })?;
+            l.halo.fill(l.ranks, &mut g.each);
             if !g.correction.is_empty() {
                 let len = ranks::tensor_len::<D>();
-                share_rows(l, &mut g.correction, len, ranks::put_tensor, |x, v| {
-                    *x = ranks::get_tensor(v)
-                })?;
+                let get = ranks::get_tensor::<D::Tensor>;
+                l.halo
+                    .fill_by(l.ranks, &mut g.correction, len, ranks::put_tensor, get);
             }
             if !g.energy.is_empty() {
                 let put = |v: &D::Vector, out: &mut Vec<f64>| ranks::put_vector(*v, out);
-                share_rows(l, &mut g.energy, D::DIM, put, |x, v| {
-                    *x = ranks::get_vector(v)
-                })?;
+                let get = ranks::get_vector::<D::Vector>;
+                l.halo.fill_by(l.ranks, &mut g.energy, D::DIM, put, get);
             }
         }
         if size > 1
@@ -700,27 +697,6 @@ impl<D: Dimension, K: Kernel, R: PairRule<D>> Simulation<D, K, R> {
             })
             .reduce(|| none, TimestepVote::min)
     }
-}
-
-/// Gives the halo rows of `values` (one per particle of a local state) their owners'
-/// values, `len` f64s each as `put` writes and `get` reads them
-/// (solver/ranks/local.rs, `HaloLists::share`).
-fn share_rows<T>(
-    local: &LocalRun<'_>,
-    values: &mut [T],
-    len: usize,
-    put: impl Fn(&T, &mut Vec<f64>),
-    get: impl Fn(&mut T, &[f64]),
-) -> Result<(), SolverError> {
-    let mut flat = Vec::with_capacity(values.len() * len);
-    for x in values.iter() {
-        put(x, &mut flat);
-    }
-    local.lists.share(local.ranks, &mut flat, len)?;
-    for (x, v) in values.iter_mut().zip(flat.chunks_exact(len)) {
-        get(x, v);
-    }
-    Ok(())
 }
 
 /// The artificial-stress tensor R of every particle, ghosts included, from its total
